@@ -1,0 +1,36 @@
+#pragma once
+/// Checks of an instance against its map, before any planning (paper: Preliminaries,
+/// "Solvability of MAPF instance").
+#include <string>
+#include <vector>
+
+#include "fleet_planner/core/fleet_graphs.h"
+#include "fleet_planner/core/grid_map.h"
+#include "fleet_planner/core/instance.h"
+
+namespace fleet_planner {
+
+/// Throws InvalidInput, naming the robot and where it came from, for input that cannot be
+/// planned at all: duplicate or empty ids, an unusable footprint, a footprint larger than the
+/// map, a start or target with a bad heading, off the map, or whose footprint covers a blocked
+/// or off-map cell.
+void validateInstance(const GridMap& map, const Instance& instance);
+
+struct RobotProblem {
+  int robot = -1;
+  std::string reason;  ///< starts with the robot's label
+};
+
+struct SolvabilityReport {
+  std::vector<RobotProblem> problems;
+  bool solvable() const { return problems.empty(); }
+  /// The problems, one per line.
+  std::string summary() const;
+};
+
+/// The solvability pre-check, per robot: start and target valid in its state graph, target
+/// reachable from start; and per pair: starts do not overlap, targets do not overlap. Passing
+/// it is necessary, not sufficient, for the instance to be solvable.
+SolvabilityReport checkSolvability(const Instance& instance, const FleetGraphs& graphs);
+
+}  // namespace fleet_planner

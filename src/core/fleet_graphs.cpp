@@ -1,0 +1,63 @@
+#include "fleet_planner/core/fleet_graphs.h"
+
+#include <algorithm>
+#include <atomic>
+#include <thread>
+#include <unordered_map>
+
+namespace fleet_planner {
+
+FleetGraphs::FleetGraphs(const GridMap& map, const std::vector<Footprint>& footprints,
+                         ActionModel model, int threads)
+    : obstacles_(map) {
+  // Discretise each distinct footprint once, then group equal cell sets.
+  std::vector<std::shared_ptr<const FootprintCells>> distinct;
+  std::unordered_multimap<std::size_t, int> by_hash;
+  robot_graph_.reserve(footprints.size());
+  for (std::size_t i = 0; i < footprints.size(); ++i) {
+    int found = -1;
+    for (std::size_t j = 0; j < i && found < 0; ++j) {
+      if (footprints[j] == footprints[i]) found = robot_graph_[j];
+    }
+    if (found < 0) {
+      auto cells = std::make_shared<const FootprintCells>(footprints[i]);
+      auto range = by_hash.equal_range(cells->cellsHash());
+      for (auto it = range.first; it != range.second && found < 0; ++it) {
+        if (distinct[it->second]->sameCells(*cells)) found = it->second;
+      }
+      if (found < 0) {
+        found = static_cast<int>(distinct.size());
+        by_hash.emplace(cells->cellsHash(), found);
+        distinct.push_back(std::move(cells));
+      }
+    }
+    robot_graph_.push_back(found);
+  }
+
+  graphs_.resize(distinct.size());
+  std::atomic<std::size_t> next{0};
+  auto worker = [&] {
+    for (std::size_t g = next++; g < distinct.size(); g = next++) {
+      graphs_[g] = std::make_shared<const StateGraph>(map, obstacles_, distinct[g], model);
+    }
+  };
+  const int n = std::max(1, std::min<int>(threads, static_cast<int>(distinct.size())));
+  std::vector<std::thread> pool;
+  for (int t = 1; t < n; ++t) pool.emplace_back(worker);
+  worker();
+  for (auto& t : pool) t.join();
+}
+
+long long FleetGraphs::totalStates() const {
+  long long total = 0;
+  for (int g : robot_graph_) total += graphs_[g]->numValidStates();
+  return total;
+}
+
+std::size_t FleetGraphs::memoryBytes() const {
+  std::size_t bytes = 0;
+  for (const auto& g : graphs_) bytes += g->memoryBytes();
+  return bytes;
+}
+
+}  // namespace fleet_planner

@@ -1,0 +1,99 @@
+#include "fleet_planner/core/instance_check.h"
+
+#include <set>
+#include <sstream>
+
+#include "fleet_planner/core/collision.h"
+#include "fleet_planner/core/errors.h"
+#include "fleet_planner/core/footprint_cells.h"
+#include "fleet_planner/core/graph_search.h"
+
+namespace fleet_planner {
+
+namespace {
+
+std::string poseText(const GridPose& p) {
+  std::ostringstream out;
+  out << "(" << p.x << "," << p.y << "," << p.heading << ")";
+  return out.str();
+}
+
+void checkPose(const GridMap& map, const Robot& robot, const FootprintCells& cells,
+               const GridPose& pose, const char* what) {
+  const std::string where = robotLabel(robot) + ": " + what + " " + poseText(pose);
+  if (!validHeading(pose.heading)) throw InvalidInput(where + " has heading outside 0..3");
+  if (!map.inside(pose.x, pose.y)) {
+    throw InvalidInput(where + " is off the " + std::to_string(map.width()) + " x " +
+                       std::to_string(map.height()) + " map");
+  }
+  for (const Cell& c : cells.body(pose.heading).cells()) {
+    const int x = pose.x + c.x, y = pose.y + c.y;
+    if (!map.inside(x, y)) throw InvalidInput(where + ": footprint leaves the map");
+    if (map.blocked(x, y)) {
+      throw InvalidInput(where + ": footprint covers the blocked cell (" + std::to_string(x) + "," +
+                         std::to_string(y) + ")");
+    }
+  }
+}
+
+}  // namespace
+
+void validateInstance(const GridMap& map, const Instance& instance) {
+  std::set<std::string> ids;
+  for (const Robot& robot : instance.robots) {
+    if (robot.id.empty()) throw InvalidInput(robotLabel(robot) + ": robot id is empty");
+    if (!ids.insert(robot.id).second) throw InvalidInput(robotLabel(robot) + ": duplicate robot id");
+    const std::string problem = footprintProblem(robot.footprint);
+    if (!problem.empty()) throw InvalidInput(robotLabel(robot) + ": footprint: " + problem);
+    const FootprintCells cells(robot.footprint);
+    for (int h = 0; h < kHeadings; ++h) {
+      const CellSet& body = cells.body(h);
+      if (body.maxX() - body.minX() + 1 > map.width() || body.maxY() - body.minY() + 1 > map.height()) {
+        throw InvalidInput(robotLabel(robot) + ": footprint (" + robot.footprint.describe() +
+                           ") is larger than the " + std::to_string(map.width()) + " x " +
+                           std::to_string(map.height()) + " map");
+      }
+    }
+    checkPose(map, robot, cells, robot.start, "start");
+    checkPose(map, robot, cells, robot.target, "target");
+  }
+}
+
+std::string SolvabilityReport::summary() const {
+  std::string out;
+  for (const auto& p : problems) out += p.reason + "\n";
+  return out;
+}
+
+SolvabilityReport checkSolvability(const Instance& instance, const FleetGraphs& graphs) {
+  SolvabilityReport report;
+  const int n = static_cast<int>(instance.robots.size());
+  for (int i = 0; i < n; ++i) {
+    const Robot& r = instance.robots[i];
+    const StateGraph& g = graphs.graph(i);
+    const StateId s = g.id(r.start), t = g.id(r.target);
+    if (!g.valid(s)) {
+      report.problems.push_back({i, robotLabel(r) + ": start " + poseText(r.start) + " is not a valid state"});
+    } else if (!g.valid(t)) {
+      report.problems.push_back({i, robotLabel(r) + ": target " + poseText(r.target) + " is not a valid state"});
+    } else if (!isReachable(g, s, t)) {
+      report.problems.push_back({i, robotLabel(r) + ": target " + poseText(r.target) +
+                                        " is not reachable from start " + poseText(r.start) +
+                                        " for its footprint"});
+    }
+  }
+  for (int i = 0; i < n; ++i) {
+    for (int j = i + 1; j < n; ++j) {
+      const Robot &a = instance.robots[i], &b = instance.robots[j];
+      if (footprintsOverlap(graphs.cells(i), a.start, graphs.cells(j), b.start)) {
+        report.problems.push_back({i, robotLabel(a) + ": start overlaps the start of " + robotLabel(b)});
+      }
+      if (footprintsOverlap(graphs.cells(i), a.target, graphs.cells(j), b.target)) {
+        report.problems.push_back({i, robotLabel(a) + ": target overlaps the target of " + robotLabel(b)});
+      }
+    }
+  }
+  return report;
+}
+
+}  // namespace fleet_planner

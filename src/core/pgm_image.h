@@ -1,0 +1,24 @@
+#pragma once
+/// Internal: a minimal reader for PGM (netpbm graymap) images, P2 and P5, as used by ROS
+/// map_server maps. Not part of the public API.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace fleet_planner::io {
+
+struct PgmImage {
+  int width = 0;
+  int height = 0;
+  int maxval = 0;
+  std::vector<std::uint16_t> pixels;  ///< row-major, row 0 = top row of the image
+};
+
+/// Reads a P2 (plain) or P5 (binary) PGM file with maxval 1..65535 and `#` comments in the
+/// header (and, in P2, between pixel values). Throws ParseError(path, line, reason): "only PGM
+/// images are supported" for any other file type, and for a bad header, a pixel above maxval,
+/// truncated or extra data, or a file that cannot be opened. The line is 0 for binary pixel
+/// data, for truncation and for the file as a whole.
+PgmImage readPgm(const std::string& path);
+
+}  // namespace fleet_planner::io

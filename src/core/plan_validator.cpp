@@ -1,0 +1,174 @@
+#include "fleet_planner/core/plan_validator.h"
+
+#include <algorithm>
+#include <memory>
+#include <sstream>
+
+#include "fleet_planner/core/collision.h"
+#include "fleet_planner/core/footprint_cells.h"
+
+namespace fleet_planner {
+
+namespace {
+
+std::string poseText(const GridPose& p) {
+  std::ostringstream out;
+  out << "(" << p.x << "," << p.y << "," << p.heading << ")";
+  return out.str();
+}
+
+// Every cell of `set` at `origin` is on the map and free.
+bool cellsFree(const GridMap& map, const CellSet& set, const GridPose& origin) {
+  for (const auto& run : set.runs()) {
+    for (int x = run.x0; x <= run.x1; ++x) {
+      if (map.blocked(origin.x + x, origin.y + run.dy)) return false;
+    }
+  }
+  return true;
+}
+
+class Checker {
+ public:
+  Checker(const GridMap& map, const Instance& instance, const Plan& plan, const ActionModel& model)
+      : map_(map), instance_(instance), plan_(plan), model_(model) {}
+
+  Violation run() {
+    const int n = static_cast<int>(instance_.robots.size());
+    if (static_cast<int>(plan_.paths.size()) != n) {
+      return fail(Violation::Kind::WrongPathCount, -1, -1, -1,
+                  "plan has " + std::to_string(plan_.paths.size()) + " paths for " +
+                      std::to_string(n) + " robots");
+    }
+    for (int i = 0; i < n; ++i) {
+      const Robot& r = instance_.robots[i];
+      const Path& p = plan_.paths[i];
+      if (p.empty()) return fail(Violation::Kind::EmptyPath, i, -1, 0, "path is empty");
+      if (p.front() != r.start)
+        return fail(Violation::Kind::WrongStart, i, -1, 0,
+                    "path starts at " + poseText(p.front()) + ", start is " + poseText(r.start));
+      if (p.back() != r.target)
+        return fail(Violation::Kind::WrongTarget, i, -1, static_cast<int>(p.size()) - 1,
+                    "path ends at " + poseText(p.back()) + ", target is " + poseText(r.target));
+      for (const GridPose& s : p) {
+        if (!validHeading(s.heading))
+          return fail(Violation::Kind::IllegalAction, i, -1, -1, "heading of " + poseText(s) + " is not 0..3");
+      }
+    }
+    cells_.reserve(n);
+    for (const Robot& r : instance_.robots) cells_.push_back(std::make_unique<FootprintCells>(r.footprint));
+
+    int horizon = 0;
+    for (const Path& p : plan_.paths) horizon = std::max(horizon, static_cast<int>(p.size()) - 1);
+
+    for (int i = 0; i < n; ++i) {
+      if (!cellsFree(map_, cells_[i]->body(plan_.paths[i][0].heading), plan_.paths[i][0]))
+        return fail(Violation::Kind::StateInObstacle, i, -1, 0,
+                    "footprint at " + poseText(plan_.paths[i][0]) + " covers a blocked or off-map cell");
+    }
+    if (Violation v = vertexConflicts(0); v.kind != Violation::Kind::None) return v;
+
+    std::vector<Action> actions(n);
+    for (int t = 0; t < horizon; ++t) {
+      for (int i = 0; i < n; ++i) {
+        const GridPose& from = stateAt(plan_.paths[i], t);
+        const GridPose& to = stateAt(plan_.paths[i], t + 1);
+        const auto action = actionBetween(from, to, model_);
+        if (!action)
+          return fail(Violation::Kind::IllegalAction, i, -1, t,
+                      "no action leads from " + poseText(from) + " to " + poseText(to));
+        actions[i] = *action;
+        if (!cellsFree(map_, cells_[i]->body(to.heading), to))
+          return fail(Violation::Kind::StateInObstacle, i, -1, t + 1,
+                      "footprint at " + poseText(to) + " covers a blocked or off-map cell");
+        if (!cellsFree(map_, cells_[i]->swept(from.heading, *action), from))
+          return fail(Violation::Kind::SweepInObstacle, i, -1, t,
+                      std::string(actionName(*action)) + " from " + poseText(from) +
+                          " sweeps a blocked or off-map cell");
+      }
+      if (Violation v = vertexConflicts(t + 1); v.kind != Violation::Kind::None) return v;
+      for (int i = 0; i < n; ++i) {
+        const GridPose& a = stateAt(plan_.paths[i], t);
+        for (int j = i + 1; j < n; ++j) {
+          const GridPose& b = stateAt(plan_.paths[j], t);
+          if (sweepsOverlap(*cells_[i], a, actions[i], *cells_[j], b, actions[j]))
+            return fail(Violation::Kind::TransferConflict, i, j, t,
+                        std::string(actionName(actions[i])) + " from " + poseText(a) + " and " +
+                            actionName(actions[j]) + " from " + poseText(b) + " sweep a common cell");
+        }
+      }
+    }
+    return {};
+  }
+
+ private:
+  Violation vertexConflicts(int t) {
+    const int n = static_cast<int>(cells_.size());
+    for (int i = 0; i < n; ++i) {
+      const GridPose& a = stateAt(plan_.paths[i], t);
+      for (int j = i + 1; j < n; ++j) {
+        const GridPose& b = stateAt(plan_.paths[j], t);
+        if (footprintsOverlap(*cells_[i], a, *cells_[j], b))
+          return fail(Violation::Kind::VertexConflict, i, j, t,
+                      "footprints at " + poseText(a) + " and " + poseText(b) + " overlap");
+      }
+    }
+    return {};
+  }
+
+  Violation fail(Violation::Kind kind, int robot, int other, int time, const std::string& what) const {
+    Violation v;
+    v.kind = kind;
+    v.robot = robot;
+    v.other = other;
+    v.time = time;
+    std::ostringstream out;
+    out << violationName(kind);
+    if (robot >= 0) out << ": robot '" << instance_.robots[robot].id << "'";
+    if (other >= 0) out << " and robot '" << instance_.robots[other].id << "'";
+    if (time >= 0) out << " at t=" << time;
+    out << ": " << what;
+    v.message = out.str();
+    return v;
+  }
+
+  const GridMap& map_;
+  const Instance& instance_;
+  const Plan& plan_;
+  const ActionModel& model_;
+  std::vector<std::unique_ptr<FootprintCells>> cells_;
+};
+
+}  // namespace
+
+ValidationResult validatePlan(const GridMap& map, const Instance& instance, const Plan& plan,
+                              const ActionModel& model) {
+  return {Checker(map, instance, plan, model).run()};
+}
+
+const char* violationName(Violation::Kind kind) {
+  switch (kind) {
+    case Violation::Kind::None:
+      return "valid";
+    case Violation::Kind::WrongPathCount:
+      return "wrong path count";
+    case Violation::Kind::EmptyPath:
+      return "empty path";
+    case Violation::Kind::WrongStart:
+      return "wrong start";
+    case Violation::Kind::WrongTarget:
+      return "wrong target";
+    case Violation::Kind::StateInObstacle:
+      return "state in obstacle";
+    case Violation::Kind::IllegalAction:
+      return "illegal action";
+    case Violation::Kind::SweepInObstacle:
+      return "sweep in obstacle";
+    case Violation::Kind::VertexConflict:
+      return "vertex conflict";
+    case Violation::Kind::TransferConflict:
+      return "transfer conflict";
+  }
+  return "?";
+}
+
+}  // namespace fleet_planner

@@ -1,0 +1,54 @@
+#include "cli_common.h"
+
+#include <fstream>
+#include <iostream>
+#include <string>
+
+#include "fleet_planner/core/errors.h"
+#include "fleet_planner/core/instance_check.h"
+#include "fleet_planner/core/instance_io.h"
+#include "fleet_planner/core/map_io.h"
+
+namespace fleet_planner::cli {
+
+namespace {
+int g_exit_code = 0;
+}  // namespace
+
+void setExitCode(int code) { g_exit_code = code; }
+int exitCode() { return g_exit_code; }
+
+double peakRssMb() {
+  std::ifstream status("/proc/self/status");
+  std::string line;
+  while (std::getline(status, line)) {
+    if (line.rfind("VmHWM:", 0) == 0) return std::stod(line.substr(6)) / 1024.0;
+  }
+  return -1.0;
+}
+
+void addProblemOptions(CLI::App* cmd, ProblemOptions& options) {
+  cmd->add_option("--map", options.map, "map: MovingAI .map or map_server .yaml (default: the scenario's map)");
+  cmd->add_option("--instance", options.instance, "instance: benchmark pool .txt or scenario .yaml")->required();
+  cmd->add_option("--agents", options.agents, "use the 'K mixed' robots of the pool (0 = all)")
+      ->check(CLI::NonNegativeNumber);
+  cmd->add_flag("--unknown-free", options.unknown_is_free, "map_server maps: unknown cells are free");
+}
+
+Problem loadProblem(const ProblemOptions& options) {
+  Instance instance = loadInstance(options.instance);
+  const std::string map_path = options.map.empty() ? instance.map_file : options.map;
+  if (map_path.empty()) {
+    throw InvalidInput(options.instance + ": no map given (pass --map or name one in the scenario)");
+  }
+  MapServerOptions map_options;
+  map_options.unknown_is_free = options.unknown_is_free;
+  GridMap map = loadMap(map_path, map_options);
+  if (options.agents > 0) instance = selectMixed(instance, options.agents);
+  validateInstance(map, instance);
+  return {std::move(map), std::move(instance)};
+}
+
+void printJsonLine(const nlohmann::json& j) { std::cout << j.dump() << std::endl; }
+
+}  // namespace fleet_planner::cli

@@ -1,0 +1,46 @@
+#pragma once
+/// Helpers shared by the CLI's subcommands.
+#include <chrono>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "cli_commands.h"
+#include "fleet_planner/core/grid_map.h"
+#include "fleet_planner/core/instance.h"
+
+namespace fleet_planner::cli {
+
+/// The process's peak resident set size in MB (VmHWM), or -1 where /proc is missing.
+double peakRssMb();
+
+/// Options naming a problem: a map, an instance (benchmark pool or YAML scenario) and how many
+/// robots of it to use.
+struct ProblemOptions {
+  std::string map;       ///< MovingAI .map or map_server .yaml; empty: the scenario's map
+  std::string instance;  ///< benchmark .txt or scenario .yaml
+  int agents = 0;        ///< 0: every robot; K: the "K mixed" robots of the pool
+  bool unknown_is_free = false;
+};
+
+/// Registers --map, --instance, --agents and --unknown-free on `cmd`.
+void addProblemOptions(CLI::App* cmd, ProblemOptions& options);
+
+struct Problem {
+  GridMap map;
+  Instance instance;
+};
+
+/// Loads map and instance, picks the robots and validates them against the map (throws
+/// InputError with file, line or robot on bad input).
+Problem loadProblem(const ProblemOptions& options);
+
+/// Prints one JSON object on one line to stdout.
+void printJsonLine(const nlohmann::json& j);
+
+/// Seconds since `start`.
+inline double secondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+}  // namespace fleet_planner::cli

@@ -1,0 +1,27 @@
+// fleet_planner_cli: generate instances, check plans, build state graphs, solve (see README).
+#include <CLI/CLI.hpp>
+
+#include <iostream>
+
+#include "cli_commands.h"
+#include "fleet_planner/core/errors.h"
+
+int main(int argc, char** argv) {
+  CLI::App app{"fleet_planner command-line tool: LA-MAPF instances, state graphs and plans"};
+  app.require_subcommand(1);
+  fleet_planner::cli::addGenerateCommand(app);
+  fleet_planner::cli::addCheckCommand(app);
+  fleet_planner::cli::addGraphsCommand(app);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e);
+  } catch (const fleet_planner::InputError& e) {
+    std::cerr << "error: " << e.what() << "\n";
+    return 2;
+  } catch (const std::exception& e) {
+    std::cerr << "error: " << e.what() << "\n";
+    return 3;
+  }
+  return fleet_planner::cli::exitCode();
+}

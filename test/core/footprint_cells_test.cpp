@@ -1,0 +1,145 @@
+// Footprint discretisation against hand-computed cell sets (cells overlapped with positive area).
+#include "fleet_planner/core/footprint_cells.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <set>
+#include <utility>
+
+#include "fleet_planner/core/errors.h"
+
+namespace fleet_planner {
+namespace {
+
+using CellList = std::set<std::pair<int, int>>;
+
+CellList asList(const CellSet& set) {
+  CellList out;
+  for (const Cell& c : set.cells()) out.insert({c.x, c.y});
+  return out;
+}
+
+CellList rect(int x0, int x1, int y0, int y1) {
+  CellList out;
+  for (int y = y0; y <= y1; ++y)
+    for (int x = x0; x <= x1; ++x) out.insert({x, y});
+  return out;
+}
+
+TEST(FootprintCells, SmallCircleCoversOnlyItsCell) {
+  for (double r : {0.1, 0.4, 0.5}) {
+    FootprintCells fc(Footprint::circle(r));
+    for (int h = 0; h < kHeadings; ++h) EXPECT_EQ(asList(fc.body(h)), CellList({{0, 0}})) << r;
+  }
+}
+
+TEST(FootprintCells, CircleGrowsByPositiveAreaRule) {
+  // r = 0.6 reaches the four neighbours (0.5 away) but not the diagonals (0.707 away).
+  EXPECT_EQ(asList(FootprintCells(Footprint::circle(0.6)).body(0)),
+            CellList({{0, 0}, {1, 0}, {-1, 0}, {0, 1}, {0, -1}}));
+  EXPECT_EQ(asList(FootprintCells(Footprint::circle(1.0)).body(2)), rect(-1, 1, -1, 1));
+  EXPECT_EQ(asList(FootprintCells(Footprint::circle(1.5)).body(1)), rect(-1, 1, -1, 1));
+  // r = 1.55 adds (+-2, 0) and (0, +-2) (1.5 away) but not (2, 1) (1.58 away).
+  CellList plus = rect(-1, 1, -1, 1);
+  for (auto c : {std::pair{2, 0}, {-2, 0}, {0, 2}, {0, -2}}) plus.insert(c);
+  EXPECT_EQ(asList(FootprintCells(Footprint::circle(1.55)).body(3)), plus);
+  // r = 1.6: 5 x 5 without its four corners.
+  CellList big = rect(-2, 2, -2, 2);
+  for (auto c : {std::pair{2, 2}, {-2, 2}, {2, -2}, {-2, -2}}) big.erase(c);
+  EXPECT_EQ(asList(FootprintCells(Footprint::circle(1.6)).body(0)), big);
+}
+
+TEST(FootprintCells, CircleRotationSweepsOnlyItsBody) {
+  FootprintCells fc(Footprint::circle(1.3));
+  EXPECT_EQ(asList(fc.swept(0, Action::RotateCcw)), asList(fc.body(0)));
+  EXPECT_EQ(asList(fc.swept(3, Action::RotateCw)), asList(fc.body(0)));
+}
+
+TEST(FootprintCells, BlockAtAllFourHeadings) {
+  // The benchmark's Block_2D -0.3 -1.1 1.1 1.1: two columns forward, three rows across.
+  FootprintCells fc(Footprint::block(-0.3, -1.1, 1.1, 1.1));
+  EXPECT_EQ(asList(fc.body(0)), rect(0, 1, -1, 1));   // +x
+  EXPECT_EQ(asList(fc.body(1)), rect(-1, 0, -1, 1));  // -x
+  EXPECT_EQ(asList(fc.body(2)), rect(-1, 1, 0, 1));   // +y
+  EXPECT_EQ(asList(fc.body(3)), rect(-1, 1, -1, 0));  // -y
+}
+
+TEST(FootprintCells, BlockEdgesOnCellBordersDoNotSpill) {
+  FootprintCells fc(Footprint::block(-0.5, -0.5, 1.5, 0.5));
+  EXPECT_EQ(asList(fc.body(0)), CellList({{0, 0}, {1, 0}}));
+  EXPECT_EQ(asList(fc.body(2)), CellList({{0, 0}, {0, 1}}));
+  EXPECT_EQ(asList(fc.body(1)), CellList({{0, 0}, {-1, 0}}));
+  EXPECT_EQ(asList(fc.body(3)), CellList({{0, 0}, {0, -1}}));
+}
+
+TEST(FootprintCells, BlockRotationSweep) {
+  // Block [-0.5, 1.5] x [-0.5, 0.5] turning from +x to +y about its origin. The front corners
+  // (radius 1.58) sweep through (2, 0), (1, 1) and (0, 2); the rear corners (radius 0.71) bulge
+  // into (-1, 0) and (0, -1). (2, 1), (1, 2), (-1, 1), (1, -1) and (-1, -1) are only touched.
+  FootprintCells fc(Footprint::block(-0.5, -0.5, 1.5, 0.5));
+  const CellList expected{{0, 0}, {1, 0}, {0, 1}, {1, 1}, {-1, 0}, {0, -1}, {2, 0}, {0, 2}};
+  EXPECT_EQ(asList(fc.swept(0, Action::RotateCcw)), expected);
+  // The same turn backwards (from +y clockwise to +x) sweeps the same cells.
+  EXPECT_EQ(asList(fc.swept(2, Action::RotateCw)), expected);
+  // Turning from +x to -y mirrors it across the x axis.
+  CellList mirrored;
+  for (auto [x, y] : expected) mirrored.insert({x, -y});
+  EXPECT_EQ(asList(fc.swept(0, Action::RotateCw)), mirrored);
+}
+
+TEST(FootprintCells, MovesSweepBothFootprints) {
+  FootprintCells fc(Footprint::block(-0.5, -0.5, 1.5, 0.5));
+  EXPECT_EQ(asList(fc.swept(0, Action::Forward)), CellList({{0, 0}, {1, 0}, {2, 0}}));
+  EXPECT_EQ(asList(fc.swept(0, Action::Backward)), CellList({{-1, 0}, {0, 0}, {1, 0}}));
+  EXPECT_EQ(asList(fc.swept(3, Action::Forward)), CellList({{0, 0}, {0, -1}, {0, -2}}));
+  EXPECT_EQ(asList(fc.swept(1, Action::Wait)), asList(fc.body(1)));
+}
+
+TEST(FootprintCells, TrianglePolygon) {
+  FootprintCells fc(Footprint::polygon({{1, 0}, {-1, 1}, {-1, -1}}));
+  EXPECT_EQ(asList(fc.body(0)), CellList({{0, 0}, {1, 0}, {-1, 0}, {-1, 1}, {-1, -1}, {0, 1}, {0, -1}}));
+  // At heading +y the nose points up: (x, y) -> (-y, x).
+  EXPECT_EQ(asList(fc.body(2)), CellList({{0, 0}, {0, 1}, {0, -1}, {-1, -1}, {1, -1}, {-1, 0}, {1, 0}}));
+}
+
+TEST(FootprintCells, NonConvexPolygonTouchingInItsNotch) {
+  // An L covering (0,0), (1,0), (0,1); cell (1,1) is only touched along the notch's edges.
+  FootprintCells fc(Footprint::polygon(
+      {{-0.5, -0.5}, {1.5, -0.5}, {1.5, 0.5}, {0.5, 0.5}, {0.5, 1.5}, {-0.5, 1.5}}));
+  EXPECT_EQ(asList(fc.body(0)), CellList({{0, 0}, {1, 0}, {0, 1}}));
+  EXPECT_EQ(asList(fc.body(2)), CellList({{0, 0}, {0, 1}, {-1, 0}}));
+  EXPECT_EQ(asList(fc.body(1)), CellList({{0, 0}, {-1, 0}, {0, -1}}));
+  EXPECT_EQ(asList(fc.body(3)), CellList({{0, 0}, {0, -1}, {1, 0}}));
+}
+
+TEST(FootprintCells, PolygonAwayFromOriginSweepsItsStarHull) {
+  // A square wholly in front of the origin: its rotation sweep must include the cells between
+  // the origin and the square (a superset of the true annular sweep), and both end poses.
+  FootprintCells fc(Footprint::polygon({{1.5, -0.5}, {2.5, -0.5}, {2.5, 0.5}, {1.5, 0.5}}));
+  EXPECT_EQ(asList(fc.body(0)), CellList({{2, 0}}));
+  const CellList sweep = asList(fc.swept(0, Action::RotateCcw));
+  // The far corner (2.5, -0.5), 2.55 from the origin, passes through (2.55, 0): cell (3, 0).
+  for (auto c : {std::pair{2, 0}, {0, 2}, {1, 0}, {0, 1}, {2, 1}, {1, 2}, {2, 2}, {3, 0}}) {
+    EXPECT_TRUE(sweep.count(c)) << c.first << "," << c.second;
+  }
+  EXPECT_FALSE(sweep.count({-1, 0}));
+  EXPECT_FALSE(sweep.count({3, 1}));  // only touched at its corner (2.5, 0.5)
+}
+
+TEST(FootprintCells, SameCellsForCirclesThatDiscretiseAlike) {
+  EXPECT_TRUE(FootprintCells(Footprint::circle(0.8)).sameCells(FootprintCells(Footprint::circle(1.4))));
+  EXPECT_FALSE(FootprintCells(Footprint::circle(0.8)).sameCells(FootprintCells(Footprint::circle(1.6))));
+}
+
+TEST(FootprintCells, RejectsInvalidFootprints) {
+  EXPECT_THROW(FootprintCells(Footprint::circle(0.0)), InvalidInput);
+  EXPECT_THROW(FootprintCells(Footprint::circle(std::nan(""))), InvalidInput);
+  EXPECT_THROW(FootprintCells(Footprint::block(1, -1, -1, 1)), InvalidInput);
+  EXPECT_THROW(FootprintCells(Footprint::polygon({{0, 0}, {1, 0}})), InvalidInput);
+  EXPECT_THROW(FootprintCells(Footprint::polygon({{0, 0}, {1, 1}, {1, 0}, {0, 1}})), InvalidInput);  // bow tie
+  EXPECT_THROW(FootprintCells(Footprint::polygon({{0, 0}, {1, 0}, {2, 0}})), InvalidInput);          // flat
+}
+
+}  // namespace
+}  // namespace fleet_planner

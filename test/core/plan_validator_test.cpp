@@ -1,0 +1,157 @@
+// The independent plan validator: each kind of violation caught on a crafted plan, valid plans
+// accepted.
+#include "fleet_planner/core/plan_validator.h"
+
+#include <gtest/gtest.h>
+
+#include "test_maps.h"
+
+namespace fleet_planner {
+namespace {
+
+using test::freeMap;
+using test::mapFromRows;
+using Kind = Violation::Kind;
+
+Robot robot(const std::string& id, Footprint f, GridPose start, GridPose target) {
+  Robot r;
+  r.id = id;
+  r.footprint = std::move(f);
+  r.start = start;
+  r.target = target;
+  return r;
+}
+
+Robot dot(const std::string& id, GridPose start, GridPose target) {
+  return robot(id, Footprint::circle(0.4), start, target);
+}
+
+Violation check(const GridMap& map, const std::vector<Robot>& robots, const std::vector<Path>& paths,
+                ActionModel model = {}) {
+  Instance instance;
+  instance.robots = robots;
+  Plan plan;
+  plan.paths = paths;
+  return validatePlan(map, instance, plan, model).violation;
+}
+
+TEST(PlanValidator, AcceptsAValidPlan) {
+  // a crosses the corridor while b waits for it, then b follows.
+  const GridMap map = freeMap(5, 2);
+  const auto v = check(map, {dot("a", {0, 0, 0}, {4, 0, 0}), dot("b", {2, 1, 3}, {2, 0, 3})},
+                       {{{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {3, 0, 0}, {4, 0, 0}},
+                        {{2, 1, 3}, {2, 1, 3}, {2, 1, 3}, {2, 1, 3}, {2, 0, 3}}});
+  EXPECT_EQ(v.kind, Kind::None) << v.message;
+}
+
+TEST(PlanValidator, AcceptsSinglePoseAndStaggeredPaths) {
+  const GridMap map = freeMap(4, 4);
+  const auto v = check(map, {dot("a", {0, 0, 0}, {0, 0, 0}), dot("b", {3, 3, 1}, {1, 3, 1})},
+                       {{{0, 0, 0}}, {{3, 3, 1}, {2, 3, 1}, {1, 3, 1}}});
+  EXPECT_EQ(v.kind, Kind::None) << v.message;
+}
+
+TEST(PlanValidator, StructuralViolations) {
+  const GridMap map = freeMap(4, 1);
+  const auto a = dot("a", {0, 0, 0}, {2, 0, 0});
+  EXPECT_EQ(check(map, {a}, {}).kind, Kind::WrongPathCount);
+  EXPECT_EQ(check(map, {a}, {{}}).kind, Kind::EmptyPath);
+  EXPECT_EQ(check(map, {a}, {{{1, 0, 0}, {2, 0, 0}}}).kind, Kind::WrongStart);
+  const auto v = check(map, {a}, {{{0, 0, 0}, {1, 0, 0}}});
+  EXPECT_EQ(v.kind, Kind::WrongTarget);
+  EXPECT_EQ(v.robot, 0);
+  EXPECT_NE(v.message.find("robot 'a'"), std::string::npos) << v.message;
+}
+
+TEST(PlanValidator, IllegalActions) {
+  const GridMap map = freeMap(4, 2);
+  const auto a = dot("a", {0, 0, 0}, {2, 0, 0});
+  auto v = check(map, {a}, {{{0, 0, 0}, {2, 0, 0}}});  // jumps two cells
+  EXPECT_EQ(v.kind, Kind::IllegalAction);
+  EXPECT_EQ(v.time, 0);
+  v = check(map, {a}, {{{0, 0, 0}, {0, 1, 0}, {1, 1, 0}, {2, 1, 0}, {2, 0, 0}}});  // sideways
+  EXPECT_EQ(v.kind, Kind::IllegalAction);
+  v = check(map, {dot("a", {0, 0, 0}, {0, 0, 1})}, {{{0, 0, 0}, {0, 0, 1}}});  // 180-degree turn
+  EXPECT_EQ(v.kind, Kind::IllegalAction);
+  // Backward moves only with the option.
+  const auto b = dot("b", {1, 0, 0}, {0, 0, 0});
+  EXPECT_EQ(check(map, {b}, {{{1, 0, 0}, {0, 0, 0}}}).kind, Kind::IllegalAction);
+  ActionModel backward;
+  backward.allow_backward = true;
+  EXPECT_EQ(check(map, {b}, {{{1, 0, 0}, {0, 0, 0}}}, backward).kind, Kind::None);
+}
+
+TEST(PlanValidator, StateInObstacle) {
+  const GridMap map = mapFromRows({"..@.."});
+  const auto v = check(map, {dot("a", {0, 0, 0}, {4, 0, 0})},
+                       {{{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {3, 0, 0}, {4, 0, 0}}});
+  EXPECT_EQ(v.kind, Kind::StateInObstacle);
+  EXPECT_EQ(v.time, 2);
+  // A footprint hanging off the map is in an obstacle too.
+  const auto w = check(freeMap(3, 3), {robot("w", Footprint::circle(0.6), {0, 1, 0}, {0, 1, 0})},
+                       {{{0, 1, 0}}});
+  EXPECT_EQ(w.kind, Kind::StateInObstacle);
+}
+
+TEST(PlanValidator, SweepInObstacle) {
+  // Both end poses of the turn are free; the front corner passes over (3, 2).
+  const GridMap map = mapFromRows({".....", ".....", "...@.", ".....", "....."});
+  const auto v = check(map, {robot("b", Footprint::block(-0.5, -0.5, 1.5, 0.5), {1, 2, 0}, {1, 2, 2})},
+                       {{{1, 2, 0}, {1, 2, 2}}});
+  EXPECT_EQ(v.kind, Kind::SweepInObstacle);
+  EXPECT_EQ(v.time, 0);
+}
+
+TEST(PlanValidator, VertexConflict) {
+  const GridMap map = freeMap(5, 1);
+  const auto v = check(map, {dot("a", {0, 0, 0}, {2, 0, 0}), dot("b", {4, 0, 1}, {3, 0, 1})},
+                       {{{0, 0, 0}, {1, 0, 0}, {2, 0, 0}}, {{4, 0, 1}, {3, 0, 1}, {2, 0, 1}, {3, 0, 1}}});
+  EXPECT_EQ(v.kind, Kind::VertexConflict);
+  EXPECT_EQ(v.time, 2);
+  EXPECT_EQ(v.robot, 0);
+  EXPECT_EQ(v.other, 1);
+}
+
+TEST(PlanValidator, SwapIsATransferConflict) {
+  const GridMap map = freeMap(2, 1);
+  const auto v = check(map, {dot("a", {0, 0, 0}, {1, 0, 0}), dot("b", {1, 0, 1}, {0, 0, 1})},
+                       {{{0, 0, 0}, {1, 0, 0}}, {{1, 0, 1}, {0, 0, 1}}});
+  EXPECT_EQ(v.kind, Kind::TransferConflict);
+  EXPECT_EQ(v.time, 0);
+}
+
+TEST(PlanValidator, TurningIntoAWaitingRobotIsATransferConflict) {
+  // The block's turn sweeps (3, 2), where a waits; no footprints overlap before or after.
+  const GridMap map = freeMap(5, 5);
+  const auto v = check(map, {robot("b", Footprint::block(-0.5, -0.5, 1.5, 0.5), {1, 2, 0}, {1, 2, 2}),
+                             dot("a", {3, 2, 0}, {3, 2, 0})},
+                       {{{1, 2, 0}, {1, 2, 2}}, {{3, 2, 0}}});
+  EXPECT_EQ(v.kind, Kind::TransferConflict);
+  EXPECT_EQ(v.robot, 0);
+  EXPECT_EQ(v.other, 1);
+}
+
+TEST(PlanValidator, ArrivedRobotsStayAtTheirTargets) {
+  // a arrives at (2, 0) at t = 2 and stays; b drives through (2, 0) at t = 4.
+  const GridMap map = freeMap(5, 2);
+  const auto v = check(map, {dot("a", {1, 1, 3}, {2, 0, 0}), dot("b", {0, 0, 0}, {4, 0, 0})},
+                       {{{1, 1, 3}, {1, 0, 3}, {1, 0, 0}, {2, 0, 0}},
+                        {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}, {0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {3, 0, 0}, {4, 0, 0}}});
+  EXPECT_EQ(v.kind, Kind::VertexConflict);
+  EXPECT_EQ(v.time, 5);
+}
+
+TEST(PlanValidator, LargeFootprintsConflictAcrossCells) {
+  // Two circles of radius 1 (3 x 3 cells) three cells apart are clear; two apart they overlap.
+  const GridMap map = freeMap(8, 3);
+  auto big = [](const std::string& id, GridPose s, GridPose t) { return robot(id, Footprint::circle(1.0), s, t); };
+  EXPECT_EQ(check(map, {big("a", {1, 1, 0}, {1, 1, 0}), big("b", {4, 1, 1}, {4, 1, 1})}, {{{1, 1, 0}}, {{4, 1, 1}}}).kind,
+            Kind::None);
+  EXPECT_EQ(check(map, {big("a", {1, 1, 0}, {1, 1, 0}), big("b", {4, 1, 1}, {3, 1, 1})},
+                  {{{1, 1, 0}}, {{4, 1, 1}, {3, 1, 1}}})
+                .kind,
+            Kind::VertexConflict);
+}
+
+}  // namespace
+}  // namespace fleet_planner

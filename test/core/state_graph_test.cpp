@@ -1,0 +1,124 @@
+// State-graph sizes on tiny maps, counted by hand.
+#include "fleet_planner/core/state_graph.h"
+
+#include <gtest/gtest.h>
+
+#include "fleet_planner/core/fleet_graphs.h"
+#include "fleet_planner/core/graph_search.h"
+#include "test_maps.h"
+
+namespace fleet_planner {
+namespace {
+
+using test::freeMap;
+using test::mapFromRows;
+
+StateGraph build(const GridMap& map, const Footprint& f, ActionModel model = {}) {
+  const ObstacleIndex obstacles(map);
+  return StateGraph(map, obstacles, std::make_shared<FootprintCells>(f), model);
+}
+
+TEST(StateGraph, SingleCellRobotOnFreeThreeByThree) {
+  const StateGraph g = build(freeMap(3, 3), Footprint::circle(0.4));
+  EXPECT_EQ(g.numValidStates(), 36);
+  // Forward: 6 of 9 cells have a cell ahead, per heading (24); two rotations per state (72).
+  EXPECT_EQ(g.numEdges(), 24 + 72);
+}
+
+TEST(StateGraph, BackwardMovesAreAnOption) {
+  ActionModel model;
+  model.allow_backward = true;
+  const StateGraph g = build(freeMap(3, 3), Footprint::circle(0.4), model);
+  EXPECT_EQ(g.numEdges(), 24 + 24 + 72);
+  EXPECT_TRUE(g.allows(g.id({1, 1, 0}), Action::Backward));
+  EXPECT_EQ(g.pose(g.next(g.id({1, 1, 0}), Action::Backward)), (GridPose{0, 1, 0}));
+}
+
+TEST(StateGraph, BlockedCellRemovesItsStates) {
+  const StateGraph g = build(mapFromRows({".....", ".....", "..@..", ".....", "....."}),
+                             Footprint::circle(0.4));
+  EXPECT_EQ(g.numValidStates(), 24 * 4);
+  EXPECT_FALSE(g.valid(g.id({2, 2, 0})));
+  EXPECT_FALSE(g.allows(g.id({1, 2, 0}), Action::Forward));
+  EXPECT_TRUE(g.allows(g.id({1, 2, 2}), Action::Forward));
+}
+
+TEST(StateGraph, TwoCellBlockNeedsRoomToTurn) {
+  // Block [-0.5, 1.5] x [-0.5, 0.5]: covers its cell and the one ahead; turning sweeps a plus
+  // of radius 2 around its cell (see FootprintCells.BlockRotationSweep).
+  const Footprint block = Footprint::block(-0.5, -0.5, 1.5, 0.5);
+  const StateGraph small = build(freeMap(3, 3), block);
+  EXPECT_EQ(small.numValidStates(), 6 * 4);
+  EXPECT_EQ(small.numEdges(), 3 * 4);  // forward only: no room to turn anywhere
+  const StateGraph g = build(freeMap(5, 5), block);
+  EXPECT_EQ(g.numValidStates(), 20 * 4);
+  // Forward: 3 x 5 per heading; each of the 8 turns fits at 2 x 2 cells.
+  EXPECT_EQ(g.numEdges(), 15 * 4 + 8 * 4);
+  EXPECT_TRUE(g.allows(g.id({1, 2, 0}), Action::RotateCcw));
+  EXPECT_FALSE(g.allows(g.id({0, 2, 0}), Action::RotateCcw));
+}
+
+TEST(StateGraph, ObstacleOnlyInTheSweepBlocksTheTurn) {
+  // Both end poses are free, but the front corner passes over (3, 2).
+  const StateGraph g = build(mapFromRows({".....", ".....", "...@.", ".....", "....."}),
+                             Footprint::block(-0.5, -0.5, 1.5, 0.5));
+  const StateId s = g.id({1, 2, 0});
+  EXPECT_TRUE(g.valid(s));
+  EXPECT_TRUE(g.valid(g.next(s, Action::RotateCcw)));
+  EXPECT_FALSE(g.allows(s, Action::RotateCcw));
+}
+
+TEST(StateGraph, PredecessorsMirrorSuccessors) {
+  const StateGraph g = build(mapFromRows({"......", ".@....", "......", "....@.", "......"}),
+                             Footprint::block(-0.4, -0.4, 1.2, 0.4));
+  long long forward = 0, backward = 0;
+  for (StateId s = 0; s < g.stateIdCount(); ++s) {
+    if (!g.valid(s)) continue;
+    g.forEachSuccessor(s, [&](Action a, StateId t) {
+      ++forward;
+      bool found = false;
+      g.forEachPredecessor(t, [&](Action b, StateId p) { found |= (p == s && a == b); });
+      EXPECT_TRUE(found);
+    });
+    g.forEachPredecessor(s, [&](Action, StateId) { ++backward; });
+  }
+  EXPECT_EQ(forward, g.numEdges());
+  EXPECT_EQ(backward, g.numEdges());
+}
+
+TEST(StateGraph, DistancesCountActions) {
+  const StateGraph g = build(freeMap(4, 1), Footprint::circle(0.4));
+  const auto dist = distancesTo(g, g.id({3, 0, 0}));
+  EXPECT_EQ(dist[g.id({0, 0, 0})], 3);
+  EXPECT_EQ(dist[g.id({0, 0, 2})], 4);  // turn, then three moves
+  EXPECT_EQ(dist[g.id({3, 0, 1})], 2);  // two quarter turns
+  EXPECT_TRUE(isReachable(g, g.id({0, 0, 1}), g.id({3, 0, 0})));
+  EXPECT_EQ(reachableFrom(g, g.id({0, 0, 0})).size(), 16u);
+}
+
+TEST(FleetGraphs, RobotsWithEqualCellsShareAGraph) {
+  const GridMap map = freeMap(8, 8);
+  const FleetGraphs graphs(map, {Footprint::circle(0.9), Footprint::circle(1.4), Footprint::circle(1.6),
+                                 Footprint::block(-0.5, -0.5, 1.5, 0.5), Footprint::circle(0.9)});
+  EXPECT_EQ(graphs.numGraphs(), 3);
+  EXPECT_EQ(graphs.graphIndex(0), graphs.graphIndex(1));
+  EXPECT_EQ(graphs.graphIndex(0), graphs.graphIndex(4));
+  EXPECT_NE(graphs.graphIndex(0), graphs.graphIndex(2));
+  // Per heading: 6 x 6 cells for the 3 x 3 circles, 4 x 4 for r = 1.6, 7 x 8 for the block.
+  EXPECT_EQ(graphs.totalStates(), 4LL * (36 + 36 + 16 + 56 + 36));
+}
+
+TEST(FleetGraphs, ThreadCountDoesNotChangeGraphs) {
+  const GridMap map = mapFromRows({"..........", "..@@......", "......@...", "..........", "...@......",
+                                   "..........", "........@.", ".........."});
+  std::vector<Footprint> fps{Footprint::circle(0.6), Footprint::block(-1.1, -0.6, 0.7, 0.6),
+                             Footprint::polygon({{1, 0}, {-1, 1}, {-1, -1}})};
+  const FleetGraphs one(map, fps, {}, 1), two(map, fps, {}, 2);
+  for (int i = 0; i < 3; ++i) {
+    EXPECT_EQ(one.graph(i).numValidStates(), two.graph(i).numValidStates());
+    EXPECT_EQ(one.graph(i).numEdges(), two.graph(i).numEdges());
+  }
+}
+
+}  // namespace
+}  // namespace fleet_planner

@@ -1,0 +1,7 @@
+#include "test_paths.h"
+
+namespace fleet_planner::test {
+
+std::string dataPath(const std::string& name) { return std::string(FLEET_PLANNER_TEST_DATA) + "/" + name; }
+
+}  // namespace fleet_planner::test
