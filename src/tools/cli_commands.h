@@ -8,6 +8,7 @@ namespace fleet_planner::cli {
 void addGenerateCommand(CLI::App& app);
 void addCheckCommand(CLI::App& app);
 void addGraphsCommand(CLI::App& app);
+void addSolveCommand(CLI::App& app);
 
 void setExitCode(int code);
 int exitCode();

@@ -1,0 +1,74 @@
+#pragma once
+/// The interface every LA-MAPF backend implements (paper: "Solving and combining"). A backend
+/// plans one subproblem: some robots of an instance, with the footprints of other robots as
+/// static obstacles and, for serial backends, the timed plans of other robots as moving
+/// obstacles.
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "fleet_planner/core/deadline.h"
+#include "fleet_planner/core/fleet_graphs.h"
+#include "fleet_planner/core/grid_map.h"
+#include "fleet_planner/core/instance.h"
+#include "fleet_planner/core/plan.h"
+
+namespace fleet_planner {
+
+/// A robot of the instance standing still at a pose for the whole solve.
+struct StaticFootprint {
+  int robot = -1;  ///< instance index (its footprint is used)
+  GridPose pose;
+};
+
+/// A robot of the instance following a timed path, then staying at its last pose forever.
+struct MovingObstacle {
+  int robot = -1;  ///< instance index (its footprint is used)
+  Path path;
+};
+
+struct Subproblem {
+  const Instance* instance = nullptr;
+  const FleetGraphs* graphs = nullptr;   ///< graphs of every robot of the instance
+  std::vector<int> robots;               ///< instance indices of the robots to plan
+  std::vector<StaticFootprint> blocked;  ///< cells covered by these footprints are blocked
+  std::vector<MovingObstacle> moving;    ///< serial backends avoid these; others reject them
+  Deadline deadline;
+  std::uint64_t seed = 0;
+};
+
+enum class SolveStatus { Success, Timeout, Infeasible, Cancelled, InvalidInput };
+
+/// "SUCCESS", "TIMEOUT", "INFEASIBLE", "CANCELLED", "INVALID_INPUT".
+const char* statusName(SolveStatus status);
+
+struct SolveStats {
+  double time_s = 0.0;
+  long long high_level_nodes = 0;
+  long long low_level_expansions = 0;
+  double peak_memory_mb = -1.0;  ///< the search's own estimate; -1 if unknown
+};
+
+struct SolveResult {
+  SolveStatus status = SolveStatus::InvalidInput;
+  std::string reason;       ///< human-readable, names the robot where one is to blame
+  std::vector<Path> paths;  ///< on success: one per Subproblem::robots entry, same order
+  SolveStats stats;
+  bool success() const { return status == SolveStatus::Success; }
+};
+
+class Solver {
+ public:
+  virtual ~Solver() = default;
+  /// The registry name ("la_cbs", "la_lacam").
+  virtual std::string name() const = 0;
+  /// Serial backends plan around MovingObstacle paths; parallel ones only take static footprints.
+  virtual bool avoidsMovingObstacles() const = 0;
+  /// Plans the subproblem. Never throws for planning outcomes; returns within ~50 ms of the
+  /// deadline; same input and seed give the same result.
+  virtual SolveResult solve(const Subproblem& problem) = 0;
+};
+
+}  // namespace fleet_planner

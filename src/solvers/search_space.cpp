@@ -1,0 +1,96 @@
+#include "fleet_planner/solvers/search_space.h"
+
+#include <set>
+
+#include "fleet_planner/core/errors.h"
+
+namespace fleet_planner {
+
+namespace {
+
+std::vector<std::int32_t> restrictedDistances(const SearchSpace& space, int a) {
+  const StateGraph& g = space.graph(a);
+  std::vector<std::int32_t> dist(g.stateIdCount(), -1);
+  const StateId target = space.target(a);
+  if (!space.allows(a, target, Action::Wait)) return dist;
+  std::vector<StateId> queue{target};
+  dist[target] = 0;
+  for (std::size_t head = 0; head < queue.size(); ++head) {
+    const StateId s = queue[head];
+    g.forEachPredecessor(s, [&](Action action, StateId prev) {
+      if (dist[prev] < 0 && space.allows(a, prev, action)) {
+        dist[prev] = dist[s] + 1;
+        queue.push_back(prev);
+      }
+    });
+  }
+  return dist;
+}
+
+std::string poseText(const GridPose& p) {
+  return "(" + std::to_string(p.x) + "," + std::to_string(p.y) + "," + std::to_string(p.heading) + ")";
+}
+
+}  // namespace
+
+SearchSpace::SearchSpace(const Subproblem& problem)
+    : instance_(problem.instance), graphs_(problem.graphs), robots_(problem.robots) {
+  if (instance_ == nullptr || graphs_ == nullptr) throw InvalidInput("subproblem without instance or graphs");
+  const int n = static_cast<int>(instance_->robots.size());
+  if (graphs_->numRobots() != n) throw InvalidInput("subproblem graphs do not match its instance");
+  std::set<int> seen;
+  auto checkIndex = [&](int r, const char* what) {
+    if (r < 0 || r >= n) throw InvalidInput(std::string(what) + " robot index " + std::to_string(r) + " out of range");
+  };
+  for (int r : robots_) {
+    checkIndex(r, "subproblem");
+    if (!seen.insert(r).second) throw InvalidInput("robot index " + std::to_string(r) + " listed twice");
+  }
+  for (const auto& b : problem.blocked) checkIndex(b.robot, "blocked footprint");
+  for (const auto& m : problem.moving) checkIndex(m.robot, "moving obstacle");
+
+  if (robots_.empty()) return;
+  const StateGraph& g0 = graphs_->graph(robots_.front());
+  if (!problem.blocked.empty()) {
+    std::vector<std::uint8_t> cells(static_cast<std::size_t>(g0.width()) * g0.height(), 0);
+    for (const auto& b : problem.blocked) {
+      for (const Cell& c : graphs_->cells(b.robot).body(b.pose.heading).cells()) {
+        const int x = b.pose.x + c.x, y = b.pose.y + c.y;
+        if (x >= 0 && y >= 0 && x < g0.width() && y < g0.height()) cells[static_cast<std::size_t>(y) * g0.width() + x] = 1;
+      }
+    }
+    static_cells_ = std::make_unique<ObstacleIndex>(GridMap(g0.width(), g0.height(), std::move(cells)));
+    has_static_ = true;
+  }
+  if (!problem.moving.empty()) {
+    reservations_ = ReservationTable(g0.width(), g0.height(), problem.moving, *graphs_, g0.actionModel());
+  }
+
+  for (int a = 0; a < numAgents(); ++a) {
+    const Robot& r = instance_->robots[robots_[a]];
+    starts_.push_back(graph(a).id(r.start));
+    targets_.push_back(graph(a).id(r.target));
+  }
+  distances_.resize(numAgents());
+  for (int a = 0; a < numAgents() && problem_.empty(); ++a) {
+    const Robot& r = instance_->robots[robots_[a]];
+    if (!graph(a).valid(starts_[a])) {
+      problem_ = label(a) + ": start " + poseText(r.start) + " is not a valid state";
+    } else if (!graph(a).valid(targets_[a])) {
+      problem_ = label(a) + ": target " + poseText(r.target) + " is not a valid state";
+    } else if (!allows(a, starts_[a], Action::Wait)) {
+      problem_ = label(a) + ": start " + poseText(r.start) + " overlaps a footprint of another subproblem";
+    } else if (!allows(a, targets_[a], Action::Wait)) {
+      problem_ = label(a) + ": target " + poseText(r.target) + " overlaps a footprint of another subproblem";
+    } else {
+      distances_[a] = restrictedDistances(*this, a);
+      if (distances_[a][starts_[a]] < 0) {
+        problem_ = label(a) + ": target " + poseText(r.target) + " is not reachable from start " + poseText(r.start);
+      }
+    }
+  }
+}
+
+std::string SearchSpace::label(int a) const { return "robot '" + instance_->robots[robots_[a]].id + "'"; }
+
+}  // namespace fleet_planner

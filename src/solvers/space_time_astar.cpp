@@ -1,0 +1,131 @@
+#include "fleet_planner/solvers/space_time_astar.h"
+
+#include <algorithm>
+#include <queue>
+#include <unordered_map>
+
+namespace fleet_planner {
+
+void AgentConstraints::forbidState(StateId s, int t) {
+  vertex_.insert(vertexKey(s, t));
+  waits_.push_back({s, t});
+  max_time_ = std::max(max_time_, t);
+}
+
+void AgentConstraints::forbidAction(StateId s, Action a, int t) {
+  edge_.insert(edgeKey(s, a, t));
+  if (a == Action::Wait) waits_.push_back({s, t});
+  max_time_ = std::max(max_time_, t + 1);
+}
+
+int AgentConstraints::lastBlockedAt(StateId s) const {
+  int last = -1;
+  for (const auto& [state, t] : waits_) {
+    if (state == s) last = std::max(last, t);
+  }
+  return last;
+}
+
+Action stepAction(const StateGraph& graph, StateId from, StateId to) {
+  if (from == to) return Action::Wait;
+  for (Action a : {Action::Forward, Action::RotateCcw, Action::RotateCw, Action::Backward}) {
+    if (graph.next(from, a) == to) return a;
+  }
+  return Action::Wait;
+}
+
+namespace {
+
+struct Node {
+  StateId s;
+  int t;  // collapsed time
+  int g;
+  int f;
+  int conflicts;
+  int parent;
+};
+
+}  // namespace
+
+LowLevelResult spaceTimeAStar(const SearchSpace& space, int a, const AgentConstraints& constraints,
+                              const Deadline& deadline, const LowLevelOptions& options) {
+  LowLevelResult result;
+  const StateGraph& g = space.graph(a);
+  const FootprintCells& cells = space.cells(a);
+  const ReservationTable& reservations = space.reservations();
+  const StateId start = space.start(a), target = space.target(a);
+  if (space.distance(a, start) < 0) return result;
+
+  // Earliest time from which the agent can stay at its target forever.
+  const GridPose target_pose = g.pose(target);
+  const int reserved_last = reservations.lastTaken(cells.body(target_pose.heading), {target_pose.x, target_pose.y});
+  if (reserved_last == ReservationTable::kForever) return result;
+  const int goal_earliest = std::max(constraints.lastBlockedAt(target) + 1, reserved_last + 1);
+  const int static_from = std::max(constraints.maxTime(), reservations.lastChange()) + 1;
+
+  auto stepBlocked = [&](StateId s, Action act, int t) {
+    if (constraints.actionForbidden(s, act, t)) return true;
+    if (reservations.empty()) return false;
+    const GridPose p = g.pose(s);
+    return reservations.taken(cells.swept(p.heading, act), {p.x, p.y}, t);
+  };
+
+  std::vector<Node> nodes;
+  std::unordered_map<std::uint64_t, int> seen;
+  auto key = [](StateId s, int t) { return (static_cast<std::uint64_t>(t) << 32) | static_cast<std::uint32_t>(s); };
+  auto worse = [&nodes](int x, int y) {
+    const Node &a1 = nodes[x], &b1 = nodes[y];
+    if (a1.f != b1.f) return a1.f > b1.f;
+    if (a1.conflicts != b1.conflicts) return a1.conflicts > b1.conflicts;
+    if (a1.g != b1.g) return a1.g < b1.g;  // deeper first
+    return x > y;                          // then first generated: deterministic
+  };
+  std::priority_queue<int, std::vector<int>, decltype(worse)> open(worse);
+
+  if (constraints.stateForbidden(start, 0)) return result;
+  nodes.push_back({start, 0, 0, space.distance(a, start), 0, -1});
+  seen.emplace(key(start, 0), 0);
+  open.push(0);
+
+  while (!open.empty()) {
+    if ((result.expansions & 255) == 0 && deadline.expired()) {
+      result.outcome = LowLevelResult::Outcome::Expired;
+      return result;
+    }
+    const int index = open.top();
+    open.pop();
+    const Node node = nodes[index];
+    if (seen[key(node.s, node.t)] != index) continue;  // superseded by a cheaper duplicate
+    ++result.expansions;
+    if (node.s == target && node.g >= goal_earliest) {
+      for (int i = index; i >= 0; i = nodes[i].parent) result.path.push_back(nodes[i].s);
+      std::reverse(result.path.begin(), result.path.end());
+      result.outcome = LowLevelResult::Outcome::Found;
+      return result;
+    }
+    const int t_next = std::min(node.t + 1, static_from);
+    auto consider = [&](Action act, StateId next) {
+      const int h = space.distance(a, next);
+      if (h < 0) return;
+      if (!space.allows(a, node.s, act)) return;
+      if (constraints.stateForbidden(next, node.g + 1) || stepBlocked(node.s, act, node.g)) return;
+      // Below the static layer time equals g, so a duplicate is never cheaper; in it, it can be.
+      const std::uint64_t k = key(next, t_next);
+      const auto it = seen.find(k);
+      if (it != seen.end() && nodes[it->second].g <= node.g + 1) return;
+      const int c = options.conflicts ? node.conflicts + options.conflicts(node.s, act, node.g) : 0;
+      seen[k] = static_cast<int>(nodes.size());
+      nodes.push_back({next, t_next, node.g + 1, node.g + 1 + h, c, index});
+      open.push(static_cast<int>(nodes.size()) - 1);
+    };
+    consider(Action::Wait, node.s);
+    g.forEachSuccessor(node.s, [&](Action act, StateId next) { consider(act, next); });
+    if (static_cast<long long>(nodes.size()) > options.max_nodes) {
+      result.outcome = LowLevelResult::Outcome::NodeLimit;
+      return result;
+    }
+  }
+  return result;
+}
+
+}  // namespace fleet_planner
