@@ -50,7 +50,7 @@ CellSet CellSet::unionWith(const CellSet& other, Cell shift) const {
   return fromCells(std::move(all));
 }
 
-bool CellSet::overlap(const CellSet& a, Cell pa, const CellSet& b, Cell pb) {
+bool CellSet::commonCell(const CellSet& a, Cell pa, const CellSet& b, Cell pb, Cell& cell) {
   if (a.runs_.empty() || b.runs_.empty()) return false;
   if (a.max_x_ + pa.x < b.min_x_ + pb.x || b.max_x_ + pb.x < a.min_x_ + pa.x ||
       a.max_y_ + pa.y < b.min_y_ + pb.y || b.max_y_ + pb.y < a.min_y_ + pa.y) {
@@ -69,7 +69,10 @@ bool CellSet::overlap(const CellSet& a, Cell pa, const CellSet& b, Cell pb) {
     } else {
       const int a0 = ra.x0 + pa.x, a1 = ra.x1 + pa.x;
       const int b0 = rb.x0 + pb.x, b1 = rb.x1 + pb.x;
-      if (std::max(a0, b0) <= std::min(a1, b1)) return true;
+      if (std::max(a0, b0) <= std::min(a1, b1)) {
+        cell = {std::max(a0, b0), ya};
+        return true;
+      }
       if (a1 < b1) {
         ++i;
       } else {

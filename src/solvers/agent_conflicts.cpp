@@ -36,15 +36,20 @@ void forEachConflict(const SearchSpace& space, const std::vector<StatePath>& pat
     for (int i = 0; i < n; ++i) m[i] = motionAt(space, paths, i, t);
     for (int i = 0; i < n; ++i) {
       for (int j = i + 1; j < n; ++j) {
-        if (t == 0 && footprintsOverlap(space.cells(i), m[i].from, space.cells(j), m[j].from)) {
-          if (f(AgentConflict{AgentConflict::Kind::Vertex, i, j, 0})) return;
+        const FootprintCells &ci = space.cells(i), &cj = space.cells(j);
+        Cell c;
+        if (t == 0 && CellSet::commonCell(ci.body(m[i].from.heading), {m[i].from.x, m[i].from.y},
+                                          cj.body(m[j].from.heading), {m[j].from.x, m[j].from.y}, c)) {
+          if (f(AgentConflict{AgentConflict::Kind::Vertex, i, j, 0, c})) return;
           continue;
         }
         if (T == 0) continue;
-        if (footprintsOverlap(space.cells(i), m[i].to, space.cells(j), m[j].to)) {
-          if (f(AgentConflict{AgentConflict::Kind::Vertex, i, j, t + 1})) return;
-        } else if (sweepsOverlap(space.cells(i), m[i].from, m[i].action, space.cells(j), m[j].from, m[j].action)) {
-          if (f(AgentConflict{AgentConflict::Kind::Transfer, i, j, t})) return;
+        if (CellSet::commonCell(ci.body(m[i].to.heading), {m[i].to.x, m[i].to.y}, cj.body(m[j].to.heading),
+                                {m[j].to.x, m[j].to.y}, c)) {
+          if (f(AgentConflict{AgentConflict::Kind::Vertex, i, j, t + 1, c})) return;
+        } else if (CellSet::commonCell(ci.swept(m[i].from.heading, m[i].action), {m[i].from.x, m[i].from.y},
+                                       cj.swept(m[j].from.heading, m[j].action), {m[j].from.x, m[j].from.y}, c)) {
+          if (f(AgentConflict{AgentConflict::Kind::Transfer, i, j, t, c})) return;
         }
       }
     }
@@ -71,15 +76,27 @@ int countConflicts(const SearchSpace& space, const std::vector<StatePath>& paths
   return count;
 }
 
-int conflictsWith(const SearchSpace& space, const std::vector<StatePath>& paths, int a, StateId s, Action action,
-                  int t) {
-  const StateGraph& ga = space.graph(a);
-  const GridPose from = ga.pose(s);
+ConflictAvoidanceTable::ConflictAvoidanceTable(const SearchSpace& space, const std::vector<StatePath>& paths,
+                                               int agent)
+    : space_(space), agent_(agent) {
+  const int T = horizon(paths);
+  steps_.resize(T + 1);
+  for (int t = 0; t <= T; ++t) {
+    for (int j = 0; j < static_cast<int>(paths.size()); ++j) {
+      if (j == agent || paths[j].empty()) continue;
+      const auto mj = motionAt(space, paths, j, t);
+      steps_[t].push_back({&space.cells(j).swept(mj.from.heading, mj.action), {mj.from.x, mj.from.y}});
+    }
+  }
+}
+
+int ConflictAvoidanceTable::conflicts(StateId s, Action action, int t) const {
+  if (steps_.empty()) return 0;
+  const GridPose p = space_.graph(agent_).pose(s);
+  const CellSet& mine = space_.cells(agent_).swept(p.heading, action);
   int count = 0;
-  for (int j = 0; j < static_cast<int>(paths.size()); ++j) {
-    if (j == a || paths[j].empty()) continue;
-    const Motion mj = motionAt(space, paths, j, t);
-    if (sweepsOverlap(space.cells(a), from, action, space.cells(j), mj.from, mj.action)) ++count;
+  for (const Motion& m : steps_[std::min<std::size_t>(t, steps_.size() - 1)]) {
+    if (CellSet::overlap(mine, {p.x, p.y}, *m.cells, m.origin)) ++count;
   }
   return count;
 }

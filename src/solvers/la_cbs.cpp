@@ -17,12 +17,12 @@ namespace {
 
 const bool kRegistered = registerSolver("la_cbs", [] { return std::make_unique<LaCbs>(); });
 
+// The agent must not cover `cell` at time t (At) or during step t (During).
 struct Constraint {
-  enum class Kind { None, State, Action };
+  enum class Kind { None, At, During };
   Kind kind = Kind::None;
   int agent = -1;
-  StateId s = kNoState;
-  Action action = Action::Wait;
+  Cell cell;
   int t = 0;
 };
 
@@ -84,14 +84,8 @@ class CbsSearch {
           Constraint c;
           c.agent = agent;
           c.t = conflict->t;
-          if (conflict->kind == AgentConflict::Kind::Vertex) {
-            c.kind = Constraint::Kind::State;
-            c.s = stateAt(current[agent], conflict->t);
-          } else {
-            c.kind = Constraint::Kind::Action;
-            c.s = stateAt(current[agent], conflict->t);
-            c.action = stepAction(space_.graph(agent), c.s, stateAt(current[agent], conflict->t + 1));
-          }
+          c.cell = conflict->cell;
+          c.kind = conflict->kind == AgentConflict::Kind::Vertex ? Constraint::Kind::At : Constraint::Kind::During;
           AgentConstraints constraints = constraintsOf(id, agent);
           apply(constraints, c);
           LowLevelResult ll = lowLevel(agent, constraints, current);
@@ -135,15 +129,16 @@ class CbsSearch {
   LowLevelResult lowLevel(int agent, const AgentConstraints& constraints, const std::vector<StatePath>& others) {
     LowLevelOptions o;
     o.max_nodes = options_.max_low_level_nodes;
-    o.conflicts = [&](StateId s, Action act, int t) { return conflictsWith(space_, others, agent, s, act, t); };
+    const ConflictAvoidanceTable cat(space_, others, agent);
+    o.conflicts = [&cat](StateId s, Action act, int t) { return cat.conflicts(s, act, t); };
     LowLevelResult ll = spaceTimeAStar(space_, agent, constraints, problem_.deadline, o);
     stats_.low_level_expansions += ll.expansions;
     return ll;
   }
 
   static void apply(AgentConstraints& constraints, const Constraint& c) {
-    if (c.kind == Constraint::Kind::State) constraints.forbidState(c.s, c.t);
-    if (c.kind == Constraint::Kind::Action) constraints.forbidAction(c.s, c.action, c.t);
+    if (c.kind == Constraint::Kind::At) constraints.forbidCellAt(c.cell, c.t);
+    if (c.kind == Constraint::Kind::During) constraints.forbidCellDuring(c.cell, c.t);
   }
 
   AgentConstraints constraintsOf(int id, int agent) const {

@@ -6,22 +6,41 @@
 
 namespace fleet_planner {
 
-void AgentConstraints::forbidState(StateId s, int t) {
-  vertex_.insert(vertexKey(s, t));
-  waits_.push_back({s, t});
-  max_time_ = std::max(max_time_, t);
+void AgentConstraints::add(const Entry& e) {
+  by_time_[e.t].push_back(e);
+  all_.push_back(e);
+  max_time_ = std::max(max_time_, e.during ? e.t + 1 : e.t);
 }
 
-void AgentConstraints::forbidAction(StateId s, Action a, int t) {
-  edge_.insert(edgeKey(s, a, t));
-  if (a == Action::Wait) waits_.push_back({s, t});
-  max_time_ = std::max(max_time_, t + 1);
+namespace {
+bool covers(const CellSet& set, const GridPose& p, const Cell& c) { return set.contains(c.x - p.x, c.y - p.y); }
+}  // namespace
+
+bool AgentConstraints::poseForbidden(const FootprintCells& cells, const GridPose& p, int t) const {
+  if (all_.empty()) return false;
+  const auto it = by_time_.find(t);
+  if (it == by_time_.end()) return false;
+  for (const Entry& e : it->second) {
+    if (!e.during && covers(cells.body(p.heading), p, e.c)) return true;
+  }
+  return false;
 }
 
-int AgentConstraints::lastBlockedAt(StateId s) const {
+bool AgentConstraints::stepForbidden(const FootprintCells& cells, const GridPose& p, Action action, int t) const {
+  if (all_.empty()) return false;
+  const auto it = by_time_.find(t);
+  if (it == by_time_.end()) return false;
+  for (const Entry& e : it->second) {
+    if (e.during && covers(cells.swept(p.heading, action), p, e.c)) return true;
+  }
+  return false;
+}
+
+int AgentConstraints::lastBlockedAt(const FootprintCells& cells, const GridPose& p) const {
   int last = -1;
-  for (const auto& [state, t] : waits_) {
-    if (state == s) last = std::max(last, t);
+  for (const Entry& e : all_) {
+    // Waiting at p sweeps exactly its footprint.
+    if (e.t > last && covers(cells.body(p.heading), p, e.c)) last = e.t;
   }
   return last;
 }
@@ -60,14 +79,13 @@ LowLevelResult spaceTimeAStar(const SearchSpace& space, int a, const AgentConstr
   const GridPose target_pose = g.pose(target);
   const int reserved_last = reservations.lastTaken(cells.body(target_pose.heading), {target_pose.x, target_pose.y});
   if (reserved_last == ReservationTable::kForever) return result;
-  const int goal_earliest = std::max(constraints.lastBlockedAt(target) + 1, reserved_last + 1);
+  const int goal_earliest = std::max(constraints.lastBlockedAt(cells, target_pose) + 1, reserved_last + 1);
   const int static_from = std::max(constraints.maxTime(), reservations.lastChange()) + 1;
 
   auto stepBlocked = [&](StateId s, Action act, int t) {
-    if (constraints.actionForbidden(s, act, t)) return true;
-    if (reservations.empty()) return false;
     const GridPose p = g.pose(s);
-    return reservations.taken(cells.swept(p.heading, act), {p.x, p.y}, t);
+    if (constraints.stepForbidden(cells, p, act, t)) return true;
+    return !reservations.empty() && reservations.taken(cells.swept(p.heading, act), {p.x, p.y}, t);
   };
 
   std::vector<Node> nodes;
@@ -82,7 +100,7 @@ LowLevelResult spaceTimeAStar(const SearchSpace& space, int a, const AgentConstr
   };
   std::priority_queue<int, std::vector<int>, decltype(worse)> open(worse);
 
-  if (constraints.stateForbidden(start, 0)) return result;
+  if (constraints.poseForbidden(cells, g.pose(start), 0)) return result;
   nodes.push_back({start, 0, 0, space.distance(a, start), 0, -1});
   seen.emplace(key(start, 0), 0);
   open.push(0);
@@ -108,7 +126,7 @@ LowLevelResult spaceTimeAStar(const SearchSpace& space, int a, const AgentConstr
       const int h = space.distance(a, next);
       if (h < 0) return;
       if (!space.allows(a, node.s, act)) return;
-      if (constraints.stateForbidden(next, node.g + 1) || stepBlocked(node.s, act, node.g)) return;
+      if (constraints.poseForbidden(cells, g.pose(next), node.g + 1) || stepBlocked(node.s, act, node.g)) return;
       // Below the static layer time equals g, so a duplicate is never cheaper; in it, it can be.
       const std::uint64_t k = key(next, t_next);
       const auto it = seen.find(k);

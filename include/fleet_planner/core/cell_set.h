@@ -44,7 +44,12 @@ class CellSet {
   CellSet unionWith(const CellSet& other, Cell shift) const;
 
   /// True when `a` placed at cell `pa` and `b` placed at cell `pb` share a cell.
-  static bool overlap(const CellSet& a, Cell pa, const CellSet& b, Cell pb);
+  static bool overlap(const CellSet& a, Cell pa, const CellSet& b, Cell pb) {
+    Cell unused;
+    return commonCell(a, pa, b, pb, unused);
+  }
+  /// Like overlap(); on true, `cell` is the first shared cell (map coordinates, row-major order).
+  static bool commonCell(const CellSet& a, Cell pa, const CellSet& b, Cell pb, Cell& cell);
 
   friend bool operator==(const CellSet& a, const CellSet& b) { return a.runs_ == b.runs_; }
   friend bool operator!=(const CellSet& a, const CellSet& b) { return !(a == b); }

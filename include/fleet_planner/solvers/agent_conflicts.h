@@ -15,6 +15,7 @@ struct AgentConflict {
   Kind kind = Kind::Vertex;
   int a = -1, b = -1;
   int t = 0;  ///< vertex: the time both stand; transfer: the step t -> t + 1
+  Cell cell;  ///< a cell both footprints (vertex) or both sweeps (transfer) cover
 };
 
 inline StateId stateAt(const StatePath& p, int t) {
@@ -28,8 +29,22 @@ std::optional<AgentConflict> firstConflict(const SearchSpace& space, const std::
 /// Number of (pair, step) with a vertex or transfer conflict.
 int countConflicts(const SearchSpace& space, const std::vector<StatePath>& paths);
 
-/// Conflicts of agent a doing `action` from s at step t with the other agents' paths.
-int conflictsWith(const SearchSpace& space, const std::vector<StatePath>& paths, int a, StateId s, Action action,
-                  int t);
+/// The other agents' motions step by step, for counting a candidate move's conflicts with them
+/// (CBS's conflict-avoidance table). Built once per low-level search.
+class ConflictAvoidanceTable {
+ public:
+  ConflictAvoidanceTable(const SearchSpace& space, const std::vector<StatePath>& paths, int agent);
+  /// Conflicts of the agent doing `action` from s during step t with the other agents.
+  int conflicts(StateId s, Action action, int t) const;
+
+ private:
+  struct Motion {
+    const CellSet* cells;
+    Cell origin;
+  };
+  const SearchSpace& space_;
+  int agent_;
+  std::vector<std::vector<Motion>> steps_;  // per step: the others' sweeps; the last repeats
+};
 
 }  // namespace fleet_planner

@@ -8,8 +8,9 @@
 ///   timed paths of earlier subproblems.
 ///
 /// High level: best-first over the constraint tree by sum of costs, fewer conflicts first;
-/// branches on the earliest conflict: a vertex conflict forbids either agent its state at that
-/// time, a transfer conflict forbids either agent its action at that step. Bypass (Boyarski et
+/// branches on the earliest conflict: a cell both agents cover is forbidden to one agent or the
+/// other at that time (vertex conflict) or during that step (transfer conflict), which splits
+/// soundly because any two poses covering one cell conflict. Bypass (Boyarski et
 /// al. 2015) adopts a child's path instead of branching when it costs the same and conflicts
 /// less. Low level: space-time A* with the exact distance heuristic, tie-broken by conflicts
 /// with the other agents' paths. Optimal sum of costs when it succeeds.

@@ -8,7 +8,7 @@
 /// agent without any path is reported as such instead of searching forever.
 #include <cstdint>
 #include <functional>
-#include <unordered_set>
+#include <unordered_map>
 #include <vector>
 
 #include "fleet_planner/core/deadline.h"
@@ -16,33 +16,35 @@
 
 namespace fleet_planner {
 
-/// CBS constraints of one agent: not at state s at time t; not doing action a from s at step t.
+/// CBS constraints of one agent, on cells: its footprint must not cover cell c at time t, or
+/// the cells it sweeps during step t (from t to t + 1) must not include c. A cell shared by two
+/// conflicting agents makes every pair of their poses covering it conflict, so forbidding it to
+/// one agent or the other splits soundly, and far more strongly than forbidding single states
+/// (the mutually conflicting constraint sets of Li et al. 2019).
 class AgentConstraints {
  public:
-  void forbidState(StateId s, int t);
-  void forbidAction(StateId s, Action a, int t);
-  bool stateForbidden(StateId s, int t) const {
-    return !vertex_.empty() && vertex_.count(vertexKey(s, t)) > 0;
-  }
-  bool actionForbidden(StateId s, Action a, int t) const {
-    return !edge_.empty() && edge_.count(edgeKey(s, a, t)) > 0;
-  }
-  /// Latest time mentioned by any constraint (-1 if none).
+  void forbidCellAt(Cell c, int t) { add({t, c, false}); }
+  void forbidCellDuring(Cell c, int t) { add({t, c, true}); }
+
+  /// The footprint at pose p at time t covers a forbidden cell.
+  bool poseForbidden(const FootprintCells& cells, const GridPose& p, int t) const;
+  /// The sweep of `action` from pose p during step t covers a forbidden cell.
+  bool stepForbidden(const FootprintCells& cells, const GridPose& p, Action action, int t) const;
+  /// Latest time at which standing at p (or waiting there) is forbidden (-1 if never).
+  int lastBlockedAt(const FootprintCells& cells, const GridPose& p) const;
+  /// Latest time any constraint speaks of (a step t counts as t + 1); -1 if none.
   int maxTime() const { return max_time_; }
-  /// Latest time at which the state is forbidden or waiting in it is forbidden (-1 if never).
-  int lastBlockedAt(StateId s) const;
-  bool empty() const { return vertex_.empty() && edge_.empty(); }
+  bool empty() const { return all_.empty(); }
 
  private:
-  static std::uint64_t vertexKey(StateId s, int t) {
-    return (static_cast<std::uint64_t>(t) << 32) | static_cast<std::uint32_t>(s);
-  }
-  static std::uint64_t edgeKey(StateId s, Action a, int t) {
-    return (static_cast<std::uint64_t>(t) << 35) | (static_cast<std::uint64_t>(static_cast<std::uint32_t>(s)) << 3) |
-           static_cast<std::uint64_t>(a);
-  }
-  std::unordered_set<std::uint64_t> vertex_, edge_;
-  std::vector<std::pair<StateId, int>> waits_;  // (state, t) of vertex and wait constraints
+  struct Entry {
+    int t;
+    Cell c;
+    bool during;  // during step t, not at time t
+  };
+  void add(const Entry& e);
+  std::unordered_map<int, std::vector<Entry>> by_time_;
+  std::vector<Entry> all_;
   int max_time_ = -1;
 };
 
