@@ -85,7 +85,10 @@ class LacamSearch {
 
       const int known = find(next);
       if (known >= 0) {
-        open.push_back(known);  // revisit: continue its remaining constraints
+        // Revisit: continue that node's remaining constraints; now and then (seeded) go back to
+        // the start instead, so that a dead end's large subtree does not hold the search
+        // (the restart rate of Okumura's lacam2/lacam3).
+        open.push_back(pibt_.rng().uniform01() < options_.restart_rate ? 0 : known);
         continue;
       }
       std::vector<float> p(priorities_.begin() + static_cast<std::ptrdiff_t>(id) * n_,

@@ -43,43 +43,96 @@ std::vector<int> LaPibt::blockers(int a, StateId from, Action action, const Conf
   return out;
 }
 
+std::vector<int> LaPibt::escapeSteps(int a, StateId from, const CellSet& sweep, Cell origin) const {
+  // Breadth-first from `from` in a's own graph (other agents ignored), remembering each state's
+  // first step; the depth at which a first step first reaches a state clear of the sweep ranks it.
+  const StateGraph& g = space_.graph(a);
+  auto clear = [&](StateId s) {
+    const GridPose p = g.pose(s);
+    return !CellSet::overlap(space_.cells(a).body(p.heading), {p.x, p.y}, sweep, origin);
+  };
+  std::vector<StateId> firsts;
+  std::vector<int> depth_of_first;
+  struct Item {
+    StateId s;
+    int first;
+    int depth;
+  };
+  std::vector<Item> queue;
+  std::vector<StateId> seen{from};
+  g.forEachSuccessor(from, [&](Action action, StateId next) {
+    if (!space_.allows(a, from, action)) return;
+    firsts.push_back(next);
+    depth_of_first.push_back(-1);
+    queue.push_back({next, static_cast<int>(firsts.size()) - 1, 1});
+    seen.push_back(next);
+  });
+  int found_depth = -1;
+  for (std::size_t head = 0; head < queue.size(); ++head) {
+    const Item item = queue[head];
+    if (found_depth >= 0 && item.depth > found_depth + 1) break;
+    if (depth_of_first[item.first] < 0 && clear(item.s)) {
+      depth_of_first[item.first] = item.depth;
+      if (found_depth < 0) found_depth = item.depth;
+    }
+    if (item.depth >= kEscapeDepth) continue;
+    g.forEachSuccessor(item.s, [&](Action action, StateId next) {
+      if (!space_.allows(a, item.s, action) || std::find(seen.begin(), seen.end(), next) != seen.end()) return;
+      seen.push_back(next);
+      queue.push_back({next, item.first, item.depth + 1});
+    });
+  }
+  std::vector<int> order;
+  for (std::size_t k = 0; k < firsts.size(); ++k) {
+    if (depth_of_first[k] >= 0) order.push_back(static_cast<int>(k));
+  }
+  std::stable_sort(order.begin(), order.end(), [&](int x, int y) { return depth_of_first[x] < depth_of_first[y]; });
+  std::vector<int> result;
+  for (int k : order) result.push_back(firsts[k]);
+  return result;
+}
+
 bool LaPibt::assign(int a, const Config& current, Config& next, int pusher, StateId avoid) {
   assigned_[a] = true;
   chosen_[a] = Action::Wait;  // while deciding, a counts as waiting for the others
   next[a] = current[a];
-  auto clearOfPusher = [&](StateId s) {
-    if (avoid == kNoState) return true;
-    const StateGraph& gp = space_.graph(pusher);
-    return !footprintsOverlap(space_.cells(a), space_.graph(a).pose(s), space_.cells(pusher), gp.pose(avoid));
-  };
-  // Best first by distance to the target; random tie-break from the seed.
-  const std::vector<StateId> options = candidates(a, current[a]);
-  std::vector<std::pair<int, std::uint64_t>> ranked;
-  for (std::size_t k = 0; k < options.size(); ++k) ranked.push_back({static_cast<int>(k), rng_.next()});
-  std::sort(ranked.begin(), ranked.end(), [&](const auto& x, const auto& y) {
-    const int dx = space_.distance(a, options[x.first]), dy = space_.distance(a, options[y.first]);
-    return dx != dy ? dx < dy : x.second < y.second;
-  });
-  for (const auto& [k, tie] : ranked) {
-    const StateId s = options[k];
-    if (!clearOfPusher(s)) continue;
+  std::vector<StateId> options;
+  if (pusher >= 0) {
+    // Pushed: step towards the nearest state clear of the cells the pusher will sweep next
+    // step. Large robots without reverse often need a turn first, so progress is enough.
+    const GridPose from = space_.graph(pusher).pose(current[pusher]);
+    const Action action = stepAction(space_.graph(pusher), current[pusher], avoid);
+    options = escapeSteps(a, current[a], space_.cells(pusher).swept(from.heading, action), {from.x, from.y});
+  } else {
+    // Best first by distance to the target; random tie-break from the seed.
+    options = candidates(a, current[a]);
+    std::vector<std::pair<StateId, std::uint64_t>> ranked;
+    for (StateId s : options) ranked.push_back({s, rng_.next()});
+    std::sort(ranked.begin(), ranked.end(), [&](const auto& x, const auto& y) {
+      const int dx = space_.distance(a, x.first), dy = space_.distance(a, y.first);
+      return dx != dy ? dx < dy : x.second < y.second;
+    });
+    options.clear();
+    for (const auto& r : ranked) options.push_back(r.first);
+  }
+  for (const StateId s : options) {
+    if (s == current[a]) return pusher < 0;  // waiting is the best it can do
     const Action action = stepAction(space_.graph(a), current[a], s);
     if (fits(a, current[a], action, current)) {
       next[a] = s;
       chosen_[a] = action;
       return true;
     }
-    if (s == current[a] || !clearOfPusher(current[a])) continue;
-    // Blocked: if only agents still to move are in the way, ask them to clear s, and wait.
+    // Blocked: if only agents still to move are in the way, ask them to clear, and wait.
     const std::vector<int> in_way = blockers(a, current[a], action, current);
     if (in_way.empty()) continue;
     bool cleared = true;
     for (int b : in_way) {
       if (!assigned_[b]) cleared = assign(b, current, next, a, s) && cleared;
     }
-    if (cleared) return true;  // a waits; the way to s opens next step
+    if (cleared) return pusher < 0;  // a waits; the way to s opens next step
   }
-  return clearOfPusher(current[a]);
+  return pusher < 0;
 }
 
 bool LaPibt::generate(const Config& current, const std::vector<std::pair<int, StateId>>& fixed,

@@ -108,9 +108,10 @@ TEST_P(Conformance, MixedFleetOfFourOnOpenMap) {
   EXPECT_TRUE(solvedValidly(o));
 }
 
-// Solvable (robots moving one at a time give a valid plan, SOC 380), but both backends time out
-// today: enabled again once the backends are strong enough (tracked in the note).
-TEST_P(Conformance, DISABLED_MixedFleetOfSixOnOpenMap) {
+// Solvable (robots moving one at a time give a valid plan, SOC 380). It pins LA-LaCAM's pushes
+// that turn a blocker before it drives away, and its restarts out of dead ends.
+TEST_P(Conformance, MixedFleetOfSixOnOpenMap) {
+  if (GetParam() == "la_cbs") GTEST_SKIP() << "known weakness: LA-CBS times out on this instance (open)";
   const World w = mixedFleet(6);
   ASSERT_TRUE(wellFormed(w));
   const Outcome o = solveWith(GetParam(), w, allRobots(w));

@@ -21,6 +21,8 @@ namespace fleet_planner {
 struct LaLacamOptions {
   /// Memory budget of one search; a search that fills it restarts with a derived seed.
   double max_memory_mb = 512;
+  /// Chance that a revisited configuration sends the search back to the start configuration.
+  double restart_rate = 0.1;
 };
 
 class LaLacam : public Solver {

@@ -6,8 +6,9 @@
 /// move. Every action sweeps the agent's current footprint, so an agent can never enter cells
 /// another agent holds now, even if that one leaves in the same step. Priority inheritance
 /// therefore works one step ahead: when an agent's best state is blocked only by agents still
-/// to move, those agents inherit its priority and must move to states clear of the state it
-/// wants, while it waits; next step the way is open. Waiting always fits, so a configuration is
+/// to move, those agents inherit its priority and take the first step of their shortest way
+/// out of the cells its move would sweep (a turn, for a robot that must turn before it can
+/// drive away), while it waits; the way opens in the next steps. Waiting always fits, so a configuration is
 /// produced unless the fixed moves clash.
 #include <vector>
 
@@ -34,11 +35,15 @@ class LaPibt {
 
  private:
   bool fits(int a, StateId from, Action action, const Config& current) const;
-  // Assigns agent a (and, through pushes, agents blocking it). `avoid`: the state of the pusher
-  // whose footprint a must leave clear (kNoState: none), `pusher` its agent. Returns false if a
-  // could not keep clear of it.
+  // Assigns agent a (and, through pushes, agents blocking it). `avoid`: the state the pusher
+  // wants next (kNoState: none), `pusher` its agent; a must end clear of the pusher's sweep to
+  // it. Returns false if a could not.
   bool assign(int a, const Config& current, Config& next, int pusher, StateId avoid);
   std::vector<int> blockers(int a, StateId from, Action action, const Config& current) const;
+  // First steps of a's shortest escapes (within kEscapeDepth steps) to a state whose footprint
+  // is clear of `sweep` at `origin`, best first.
+  std::vector<int> escapeSteps(int a, StateId from, const CellSet& sweep, Cell origin) const;
+  static constexpr int kEscapeDepth = 8;
 
   const SearchSpace& space_;
   Rng rng_;
