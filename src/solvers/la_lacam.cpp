@@ -56,7 +56,7 @@ class LacamSearch {
     Config current(n_), next;
     long long iterations = 0;
     while (!open.empty()) {
-      if ((++iterations & 15) == 0 && (problem_.deadline.expired() || memoryMb() > options_.max_memory_mb)) {
+      if (problem_.deadline.expired() || ((++iterations & 15) == 0 && memoryMb() > options_.max_memory_mb)) {
         if (problem_.deadline.cancelled()) return failure(SolveStatus::Cancelled, "cancelled");
         if (problem_.deadline.timedOut()) return failure(SolveStatus::Timeout, "time limit reached");
         out_of_memory_ = true;

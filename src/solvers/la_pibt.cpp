@@ -1,6 +1,7 @@
 #include "fleet_planner/solvers/la_pibt.h"
 
 #include <algorithm>
+#include <unordered_set>
 
 #include "fleet_planner/core/collision.h"
 #include "fleet_planner/solvers/space_time_astar.h"
@@ -59,13 +60,13 @@ std::vector<int> LaPibt::escapeSteps(int a, StateId from, const CellSet& sweep, 
     int depth;
   };
   std::vector<Item> queue;
-  std::vector<StateId> seen{from};
+  std::unordered_set<StateId> seen{from};
   g.forEachSuccessor(from, [&](Action action, StateId next) {
     if (!space_.allows(a, from, action)) return;
     firsts.push_back(next);
     depth_of_first.push_back(-1);
     queue.push_back({next, static_cast<int>(firsts.size()) - 1, 1});
-    seen.push_back(next);
+    seen.insert(next);
   });
   int found_depth = -1;
   for (std::size_t head = 0; head < queue.size(); ++head) {
@@ -75,10 +76,9 @@ std::vector<int> LaPibt::escapeSteps(int a, StateId from, const CellSet& sweep, 
       depth_of_first[item.first] = item.depth;
       if (found_depth < 0) found_depth = item.depth;
     }
-    if (item.depth >= kEscapeDepth) continue;
+    if (item.depth >= kEscapeDepth || queue.size() >= kEscapeStates) continue;
     g.forEachSuccessor(item.s, [&](Action action, StateId next) {
-      if (!space_.allows(a, item.s, action) || std::find(seen.begin(), seen.end(), next) != seen.end()) return;
-      seen.push_back(next);
+      if (!space_.allows(a, item.s, action) || !seen.insert(next).second) return;
       queue.push_back({next, item.first, item.depth + 1});
     });
   }

@@ -9,6 +9,7 @@ void addGenerateCommand(CLI::App& app);
 void addCheckCommand(CLI::App& app);
 void addGraphsCommand(CLI::App& app);
 void addSolveCommand(CLI::App& app);
+void addDecomposeCommand(CLI::App& app);
 
 void setExitCode(int code);
 int exitCode();

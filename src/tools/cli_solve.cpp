@@ -1,11 +1,10 @@
-// `solve`: plan an instance with a backend (raw mode: the whole fleet as one subproblem).
+// `solve`: plan an instance with a backend, raw (the fleet as one subproblem) or layered.
 #include <chrono>
 
 #include "cli_common.h"
 #include "fleet_planner/core/fleet_graphs.h"
 #include "fleet_planner/core/plan_io.h"
-#include "fleet_planner/core/plan_validator.h"
-#include "fleet_planner/solvers/registry.h"
+#include "fleet_planner/layered_planner.h"
 
 namespace fleet_planner::cli {
 
@@ -15,64 +14,67 @@ void addSolveCommand(CLI::App& app) {
     ProblemOptions problem;
     std::string backend = "la_cbs";
     std::string mode = "raw";
+    std::string steps = "1234";
     double time_limit = 60;
     std::uint64_t seed = 0;
     std::string out;
-    int threads = 1;
+    int threads = 2;
   };
   auto o = std::make_shared<Options>();
   addProblemOptions(cmd, o->problem);
   cmd->add_option("--backend", o->backend, "la_cbs | la_lacam (any registered backend)");
-  cmd->add_option("--mode", o->mode, "raw: one subproblem for the whole fleet")->check(CLI::IsMember({"raw"}));
+  cmd->add_option("--mode", o->mode, "raw: the fleet as one subproblem; layered: decompose first")
+      ->check(CLI::IsMember({"raw", "layered"}));
+  cmd->add_option("--steps", o->steps, "layered: decomposition steps 1, 12, 123 or 1234")
+      ->check(CLI::IsMember({"1", "12", "123", "1234"}));
   cmd->add_option("--time-limit", o->time_limit, "seconds for the whole solve, graphs included")
       ->check(CLI::NonNegativeNumber);
   cmd->add_option("--seed", o->seed, "random seed (same seed, same plan)");
   cmd->add_option("--out", o->out, "write the plan (YAML) here on success");
-  cmd->add_option("--threads", o->threads, "threads for graph building")->check(CLI::PositiveNumber);
+  cmd->add_option("--threads", o->threads, "threads for graphs and relation graphs")->check(CLI::PositiveNumber);
   cmd->callback([o] {
     const auto t0 = std::chrono::steady_clock::now();
     const Deadline deadline = Deadline::in(o->time_limit);
     const Problem p = loadProblem(o->problem);
-    auto solver = makeSolver(o->backend);
     std::vector<Footprint> footprints;
     for (const auto& r : p.instance.robots) footprints.push_back(r.footprint);
     const auto t1 = std::chrono::steady_clock::now();
     const FleetGraphs graphs(p.map, footprints, {}, o->threads);
     const double precompute_s = secondsSince(t1);
 
-    Subproblem sub;
-    sub.instance = &p.instance;
-    sub.graphs = &graphs;
-    for (int i = 0; i < static_cast<int>(p.instance.robots.size()); ++i) sub.robots.push_back(i);
-    sub.deadline = deadline;
-    sub.seed = o->seed;
-    const SolveResult result = solver->solve(sub);
+    LayeredOptions options;
+    options.backend = o->backend;
+    options.decompose = o->mode == "layered";
+    options.last_step = static_cast<int>(o->steps.size());
+    options.threads = o->threads;
+    options.seed = o->seed;
+    const LayeredResult result = planLayered(p.map, p.instance, graphs, options, deadline);
 
+    const int n = static_cast<int>(p.instance.robots.size());
+    int largest = 0;
+    for (const auto& s : result.subproblems) largest = std::max(largest, static_cast<int>(s.robots.size()));
     nlohmann::json j{{"status", statusName(result.status)},
                      {"success", result.success()},
+                     {"valid", result.success()},  // a returned plan has passed the validator
                      {"backend", o->backend},
                      {"mode", o->mode},
-                     {"agents", p.instance.robots.size()},
+                     {"steps", options.decompose ? o->steps : ""},
+                     {"agents", n},
                      {"seed", o->seed},
                      {"precompute_s", precompute_s},
-                     {"solve_s", result.stats.time_s},
-                     {"high_level_nodes", result.stats.high_level_nodes},
-                     {"low_level_expansions", result.stats.low_level_expansions}};
+                     {"decompose_s", result.decompose_s},
+                     {"solve_s", result.solve_s},
+                     {"subproblems", result.decomposition.subproblems.size()},
+                     {"max_subproblem", result.decomposition.largest()},
+                     {"decomposition_rate", result.decomposition.rate(n)},
+                     {"solved_subproblems", result.subproblems.size()},
+                     {"max_solved_subproblem", largest},
+                     {"merges", result.merges}};
     if (result.success()) {
-      Plan plan;
-      plan.paths = result.paths;
-      const ValidationResult v = validatePlan(p.map, p.instance, plan);
-      std::vector<GridPose> targets;
-      for (const auto& r : p.instance.robots) targets.push_back(r.target);
-      const PlanMetrics m = planMetrics(plan, targets);
-      j["valid"] = v.valid();
-      if (!v.valid()) j["violation"] = v.violation.message;
-      j["soc"] = m.soc;
-      j["makespan"] = m.makespan;
-      if (!o->out.empty()) savePlan(p.instance, plan, o->out);
-      if (!v.valid()) setExitCode(1);
+      j["soc"] = result.metrics.soc;
+      j["makespan"] = result.metrics.makespan;
+      if (!o->out.empty()) savePlan(p.instance, result.plan, o->out);
     } else {
-      j["valid"] = false;
       j["soc"] = nullptr;
       j["makespan"] = nullptr;
       j["reason"] = result.reason;

@@ -40,10 +40,11 @@ class LaPibt {
   // it. Returns false if a could not.
   bool assign(int a, const Config& current, Config& next, int pusher, StateId avoid);
   std::vector<int> blockers(int a, StateId from, Action action, const Config& current) const;
-  // First steps of a's shortest escapes (within kEscapeDepth steps) to a state whose footprint
+  // First steps of a's shortest escapes (within kEscapeDepth steps and kEscapeStates states) to a state whose footprint
   // is clear of `sweep` at `origin`, best first.
   std::vector<int> escapeSteps(int a, StateId from, const CellSet& sweep, Cell origin) const;
   static constexpr int kEscapeDepth = 8;
+  static constexpr std::size_t kEscapeStates = 4096;  // bound on one escape search
 
   const SearchSpace& space_;
   Rng rng_;

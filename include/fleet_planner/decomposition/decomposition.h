@@ -1,0 +1,52 @@
+#pragma once
+/// Decomposition of an LA-MAPF instance into subproblems (paper: Methodology). Clusters have no
+/// solving order (Algorithms 1-2); each cluster is split into levels, which do (Algorithms 3-4).
+/// The result is one ordered list of subproblems: solving them one after another, each treating
+/// the others as static obstacles (earlier ones at their targets, later ones at their starts),
+/// loses no solvability.
+#include <string>
+#include <vector>
+
+#include "fleet_planner/core/deadline.h"
+#include "fleet_planner/core/fleet_graphs.h"
+#include "fleet_planner/core/instance.h"
+
+namespace fleet_planner {
+
+/// Which steps to run: 1 = initial clusters, 2 = cluster bipartition, 3 = initial levels,
+/// 4 = level bipartition. Steps run in order up to `last_step` (1..4).
+struct DecompositionOptions {
+  int last_step = 4;
+  int threads = 1;  ///< for the per-robot relation graphs; the result does not depend on it
+};
+
+struct DecompositionSubproblem {
+  std::vector<int> robots;  ///< instance indices, ascending
+  int cluster = 0;          ///< index of the cluster it belongs to
+  int level = 0;            ///< position among its cluster's levels (0 = first)
+};
+
+struct DecompositionStep {
+  int step = 0;             ///< 1..4
+  int subproblems = 0;      ///< after the step
+  int largest = 0;          ///< robots in the largest subproblem after the step
+  double time_s = 0.0;      ///< time of this step alone
+};
+
+struct Decomposition {
+  std::vector<DecompositionSubproblem> subproblems;  ///< in solving order
+  std::vector<DecompositionStep> steps;              ///< statistics after each step run
+  double relations_s = 0.0;                          ///< building the relation graphs
+  bool complete = true;  ///< false if the deadline cut it short (then: one subproblem, all robots)
+
+  int largest() const;
+  /// Largest subproblem / robots (the paper's decomposition rate); 0 for no robots.
+  double rate(int robots) const;
+};
+
+/// Decomposes `instance`. Every robot's target must be reachable from its start in its graph
+/// (throws InvalidInput naming the robot otherwise). Deterministic.
+Decomposition decompose(const Instance& instance, const FleetGraphs& graphs, const DecompositionOptions& options,
+                        const Deadline& deadline = {});
+
+}  // namespace fleet_planner

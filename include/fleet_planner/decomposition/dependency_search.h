@@ -1,0 +1,29 @@
+#pragma once
+/// search_path_agent and search_path_SAT (paper: "Variants of search path") over a robot's
+/// component connectivity graph: a complete search for a path from the robot's start component
+/// to its target component that enters only components whose SATs pass a filter, returning the
+/// SATs the path is related to. Among paths it prefers those related to fewer SATs (Dijkstra,
+/// each component costing its number of SATs), so that robots depend on as few others as they
+/// can.
+#include <optional>
+#include <vector>
+
+#include "fleet_planner/decomposition/relation_graph.h"
+
+namespace fleet_planner {
+
+/// Which SATs a path may touch: `allowed[sat]` nonzero (all when `allowed` is empty) and
+/// `avoided[sat]` zero (none avoided when empty).
+struct SatFilter {
+  std::vector<char> allowed;
+  std::vector<char> avoided;
+  bool passes(int sat) const {
+    return (allowed.empty() || allowed[sat]) && (avoided.empty() || !avoided[sat]);
+  }
+};
+
+/// The SATs (ascending) of the best path through components that pass `filter`, or nullopt if
+/// no such path exists.
+std::optional<std::vector<int>> searchPathSats(const RelationGraph& graph, const SatFilter& filter);
+
+}  // namespace fleet_planner

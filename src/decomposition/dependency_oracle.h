@@ -1,0 +1,80 @@
+#pragma once
+// The dependency queries the decomposition algorithms ask, in terms of robots and SAT sets
+// (masks over robots, or over SATs: 2j = start of robot j, 2j + 1 = its target).
+#include <optional>
+#include <vector>
+
+#include "fleet_planner/core/deadline.h"
+#include "fleet_planner/decomposition/dependency_search.h"
+
+namespace fleet_planner::detail {
+
+using Mask = std::vector<char>;
+
+class DependencyOracle {
+ public:
+  DependencyOracle(const std::vector<RelationGraph>& graphs) : graphs_(graphs), n_(static_cast<int>(graphs.size())) {}
+
+  int robots() const { return n_; }
+
+  /// search_path_agent: the robots robot i's path is related to, through components related only
+  /// to robots in `avail` (empty mask: any) and to none in `avoid` (empty: none).
+  std::optional<std::vector<int>> agents(int i, const Mask& avail, const Mask& avoid) {
+    SatFilter f;
+    if (!avail.empty()) f.allowed = satsOf(avail);
+    if (!avoid.empty()) f.avoided = satsOf(avoid);
+    auto sats = query(i, f);
+    if (!sats) return std::nullopt;
+    std::vector<int> out;
+    for (int s : *sats) {
+      if (out.empty() || out.back() != s / 2) out.push_back(s / 2);
+    }
+    return out;
+  }
+
+  /// search_path_SAT: the SATs robot i's path is related to, through components whose SATs are
+  /// all in `avail` (empty: any) and none in `avoid` (empty: none).
+  std::optional<std::vector<int>> sats(int i, const Mask& avail, const Mask& avoid) {
+    SatFilter f;
+    f.allowed = avail;
+    f.avoided = avoid;
+    return query(i, f);
+  }
+
+  long long queries() const { return queries_; }
+
+ private:
+  std::optional<std::vector<int>> query(int i, const SatFilter& f) {
+    ++queries_;
+    return searchPathSats(graphs_[i], f);
+  }
+  Mask satsOf(const Mask& robots) const {
+    Mask m(2 * n_, 0);
+    for (int j = 0; j < n_; ++j) m[2 * j] = m[2 * j + 1] = robots[j];
+    return m;
+  }
+
+  const std::vector<RelationGraph>& graphs_;
+  int n_;
+  long long queries_ = 0;
+};
+
+inline Mask maskOf(const std::vector<int>& robots, int n) {
+  Mask m(n, 0);
+  for (int r : robots) m[r] = 1;
+  return m;
+}
+
+/// Algorithm 1, first half: connected components of the relevance graph (ascending robots).
+std::vector<std::vector<int>> initialClusters(DependencyOracle& oracle, const Deadline& deadline);
+/// Algorithm 1, second half, with Algorithm 2: bipartition each cluster until none splits.
+std::vector<std::vector<int>> bipartitionClusters(DependencyOracle& oracle, const std::vector<std::vector<int>>& clusters,
+                                                  const Deadline& deadline);
+/// Algorithm 3, first half: strongly connected components of the solving-order graph of one
+/// cluster, in solving order.
+std::vector<std::vector<int>> initialLevels(DependencyOracle& oracle, const std::vector<int>& cluster);
+/// Algorithm 3, second half, with Algorithm 4: bipartition each level until none splits.
+std::vector<std::vector<int>> bipartitionLevels(DependencyOracle& oracle, const std::vector<int>& cluster,
+                                                const std::vector<std::vector<int>>& levels, const Deadline& deadline);
+
+}  // namespace fleet_planner::detail

@@ -1,0 +1,59 @@
+#include "fleet_planner/decomposition/dependency_search.h"
+
+#include <algorithm>
+#include <functional>
+#include <limits>
+#include <queue>
+
+namespace fleet_planner {
+
+std::optional<std::vector<int>> searchPathSats(const RelationGraph& r, const SatFilter& filter) {
+  const ComponentGraph& g = *r.graph;
+  const int n = g.numComponents();
+  const int own_start = 2 * r.robot, own_target = 2 * r.robot + 1;  // the robot's own SATs: ignored
+  auto passable = [&](int c) {
+    for (int k = g.sat_begin[c]; k < g.sat_begin[c + 1]; ++k) {
+      const int s = g.sats[k];
+      if (s != own_start && s != own_target && !filter.passes(s)) return false;
+    }
+    return true;
+  };
+  auto cost = [&](int c) {
+    int k = 0;
+    for (int i = g.sat_begin[c]; i < g.sat_begin[c + 1]; ++i) k += g.sats[i] / 2 != r.robot;
+    return k;
+  };
+  if (r.start < 0 || r.target < 0 || !passable(r.start) || !passable(r.target)) return std::nullopt;
+  constexpr int kInf = std::numeric_limits<int>::max();
+  std::vector<int> dist(n, kInf), parent(n, -1);
+  using Item = std::pair<int, int>;  // (distance, component): ties by component, deterministic
+  std::priority_queue<Item, std::vector<Item>, std::greater<Item>> open;
+  dist[r.start] = cost(r.start);
+  open.push({dist[r.start], r.start});
+  while (!open.empty()) {
+    const auto [d, c] = open.top();
+    open.pop();
+    if (d != dist[c]) continue;
+    if (c == r.target) break;
+    for (int k = g.edge_begin[c]; k < g.edge_begin[c + 1]; ++k) {
+      const int next = g.edges[k];
+      if (dist[next] != kInf && dist[next] <= d + cost(next)) continue;
+      if (!passable(next)) continue;
+      dist[next] = d + cost(next);
+      parent[next] = c;
+      open.push({dist[next], next});
+    }
+  }
+  if (dist[r.target] == kInf) return std::nullopt;
+  std::vector<int> sats;
+  for (int c = r.target; c >= 0; c = parent[c]) {
+    for (int k = g.sat_begin[c]; k < g.sat_begin[c + 1]; ++k) {
+      if (g.sats[k] / 2 != r.robot) sats.push_back(g.sats[k]);
+    }
+  }
+  std::sort(sats.begin(), sats.end());
+  sats.erase(std::unique(sats.begin(), sats.end()), sats.end());
+  return sats;
+}
+
+}  // namespace fleet_planner

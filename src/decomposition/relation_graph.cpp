@@ -1,0 +1,241 @@
+// Component connectivity graphs; see relation_graph.h (paper: Preliminaries, "Cluster and
+// level" for r_s / r_t, and "Component connectivity graph").
+#include "fleet_planner/decomposition/relation_graph.h"
+
+#include <algorithm>
+#include <atomic>
+#include <thread>
+#include <unordered_map>
+
+namespace fleet_planner {
+
+namespace {
+
+constexpr Action kMoves[] = {Action::Forward, Action::Backward, Action::RotateCcw, Action::RotateCw};
+
+// Per-thread arrays over state ids, reused from graph to graph (and left clean after each).
+struct Scratch {
+  std::vector<std::int32_t> stamp, rel, index, low, comp, count;
+  std::vector<std::uint8_t> on_stack;
+  std::vector<StateId> stack;
+  std::vector<std::pair<StateId, int>> calls;
+  void resize(std::size_t n) {
+    if (stamp.size() >= n) return;
+    stamp.assign(n, -1);
+    rel.assign(n, 0);
+    index.assign(n, -1);
+    low.assign(n, 0);
+    comp.assign(n, -1);
+    count.assign(n, 0);
+    on_stack.assign(n, 0);
+  }
+};
+
+class Builder {
+ public:
+  Builder(const Instance& instance, const FleetGraphs& graphs, int representative, Scratch& s)
+      : instance_(instance), graphs_(graphs), g_(graphs.graph(representative)), cells_(graphs.cells(representative)), s_(s) {
+    s_.resize(g_.stateIdCount());
+  }
+
+  std::shared_ptr<ComponentGraph> build() {
+    relate();
+    components();
+    return assemble();
+  }
+  int componentOf(StateId s) const { return s_.comp[s]; }
+
+  // Leaves the scratch arrays as found.
+  void reset() {
+    for (StateId u : touched_) {
+      s_.rel[u] = 0;
+      s_.count[u] = 0;
+      s_.stamp[u] = -1;
+    }
+    for (StateId u = 0; u < g_.stateIdCount(); ++u) {
+      s_.index[u] = -1;
+      s_.comp[u] = -1;
+    }
+  }
+
+ private:
+  // Every (state, SAT) relation, SATs in increasing order; then one id per distinct SAT list.
+  void relate() {
+    const int n = static_cast<int>(instance_.robots.size());
+    for (int sat = 0; sat < 2 * n; ++sat) {
+      const Robot& other = instance_.robots[sat / 2];
+      const GridPose& p = sat % 2 == 0 ? other.start : other.target;
+      for (const Cell& offset : graphs_.cells(sat / 2).body(p.heading).cells()) {
+        const Cell c{p.x + offset.x, p.y + offset.y};
+        for (int h = 0; h < kHeadings; ++h) {
+          for (const Cell& d : cells_.body(h).cells()) mark(g_.id({c.x - d.x, c.y - d.y, h}), sat);
+          for (Action a : kMoves) {
+            for (const Cell& d : cells_.swept(h, a).cells()) {
+              const StateId u = g_.id({c.x - d.x, c.y - d.y, h});
+              if (u == kNoState || !g_.allows(u, a)) continue;
+              mark(u, sat);
+              mark(g_.next(u, a), sat);
+            }
+          }
+        }
+      }
+    }
+    // Group the pairs by state (counting sort, stable: each state's SATs stay ascending).
+    std::vector<std::int32_t> begin(touched_.size() + 1, 0);
+    for (std::size_t k = 0; k < touched_.size(); ++k) begin[k + 1] = begin[k] + s_.count[touched_[k]];
+    for (std::size_t k = 0; k < touched_.size(); ++k) s_.count[touched_[k]] = static_cast<std::int32_t>(k);  // slot
+    std::vector<std::int32_t> fill(begin.begin(), begin.end() - 1), grouped(pairs_.size());
+    for (const auto& [u, sat] : pairs_) grouped[fill[s_.count[u]]++] = sat;
+    // Intern the lists: relation id 0 = unrelated, k = rel_sats_[k].
+    std::unordered_map<std::uint64_t, std::vector<int>> by_hash;
+    rel_sats_.assign(1, {});
+    for (std::size_t k = 0; k < touched_.size(); ++k) {
+      const auto first = grouped.begin() + begin[k], last = grouped.begin() + begin[k + 1];
+      std::uint64_t h = 1469598103934665603ULL;
+      for (auto it = first; it != last; ++it) h = (h ^ static_cast<std::uint64_t>(*it)) * 1099511628211ULL;
+      int id = -1;
+      for (int candidate : by_hash[h]) {
+        if (std::equal(first, last, rel_sats_[candidate].begin(), rel_sats_[candidate].end())) id = candidate;
+      }
+      if (id < 0) {
+        id = static_cast<int>(rel_sats_.size());
+        rel_sats_.emplace_back(first, last);
+        by_hash[h].push_back(id);
+      }
+      s_.rel[touched_[k]] = id;
+    }
+  }
+
+  void mark(StateId u, int sat) {
+    if (u == kNoState || !g_.valid(u) || s_.stamp[u] == sat) return;
+    if (s_.stamp[u] < 0) touched_.push_back(u);
+    s_.stamp[u] = sat;
+    ++s_.count[u];
+    pairs_.push_back({u, sat});
+  }
+
+  // Tarjan's strongly connected components, iterative, over edges within one relation id; every
+  // edge that may leave a component (other relation, tree edge, edge into a finished
+  // component) is kept for assemble(). Edges to states on the stack stay inside one.
+  void components() {
+    int counter = 0;
+    for (StateId root = 0; root < g_.stateIdCount(); ++root) {
+      if (!g_.valid(root) || s_.index[root] >= 0) continue;
+      open(root, counter);
+      while (!s_.calls.empty()) {
+        const StateId u = s_.calls.back().first;
+        bool descended = false;
+        while (s_.calls.back().second < 4) {
+          const Action a = kMoves[s_.calls.back().second++];
+          if (!g_.allows(u, a)) continue;
+          const StateId v = g_.next(u, a);
+          if (s_.rel[v] != s_.rel[u]) {
+            links_.push_back({u, v});
+            continue;
+          }
+          if (s_.index[v] < 0) {
+            links_.push_back({u, v});  // a tree edge crosses components when v's closes first
+            open(v, counter);
+            descended = true;
+            break;
+          }
+          if (s_.on_stack[v]) {
+            s_.low[u] = std::min(s_.low[u], s_.index[v]);
+          } else {
+            links_.push_back({u, v});  // into a finished component
+          }
+        }
+        if (descended) continue;
+        if (s_.low[u] == s_.index[u]) {
+          StateId w;
+          do {
+            w = s_.stack.back();
+            s_.stack.pop_back();
+            s_.on_stack[w] = 0;
+            s_.comp[w] = num_comps_;
+          } while (w != u);
+          comp_rel_.push_back(s_.rel[u]);
+          ++num_comps_;
+        }
+        s_.calls.pop_back();
+        if (!s_.calls.empty()) {
+          const StateId parent = s_.calls.back().first;
+          s_.low[parent] = std::min(s_.low[parent], s_.low[u]);
+        }
+      }
+    }
+  }
+
+  void open(StateId v, int& counter) {
+    s_.index[v] = s_.low[v] = counter++;
+    s_.stack.push_back(v);
+    s_.on_stack[v] = 1;
+    s_.calls.push_back({v, 0});
+  }
+
+  std::shared_ptr<ComponentGraph> assemble() {
+    auto out = std::make_shared<ComponentGraph>();
+    for (int c = 0; c < num_comps_; ++c) {
+      const auto& list = rel_sats_[comp_rel_[c]];
+      out->sats.insert(out->sats.end(), list.begin(), list.end());
+      out->sat_begin.push_back(static_cast<std::int32_t>(out->sats.size()));
+    }
+    std::vector<std::pair<std::int32_t, std::int32_t>> cross;
+    cross.reserve(links_.size());
+    for (const auto& [u, v] : links_) {
+      if (s_.comp[u] != s_.comp[v]) cross.push_back({s_.comp[u], s_.comp[v]});
+    }
+    std::sort(cross.begin(), cross.end());
+    cross.erase(std::unique(cross.begin(), cross.end()), cross.end());
+    std::size_t k = 0;
+    for (int c = 0; c < num_comps_; ++c) {
+      for (; k < cross.size() && cross[k].first == c; ++k) out->edges.push_back(cross[k].second);
+      out->edge_begin.push_back(static_cast<std::int32_t>(out->edges.size()));
+    }
+    return out;
+  }
+
+  const Instance& instance_;
+  const FleetGraphs& graphs_;
+  const StateGraph& g_;
+  const FootprintCells& cells_;
+  Scratch& s_;
+  std::vector<StateId> touched_;
+  std::vector<std::pair<StateId, int>> pairs_;
+  std::vector<std::vector<int>> rel_sats_;
+  std::vector<int> comp_rel_;
+  std::vector<std::pair<StateId, StateId>> links_;
+  int num_comps_ = 0;
+};
+
+}  // namespace
+
+std::vector<RelationGraph> buildRelationGraphs(const Instance& instance, const FleetGraphs& graphs, int threads) {
+  const int n = static_cast<int>(instance.robots.size());
+  std::vector<std::vector<int>> users(graphs.numGraphs());
+  for (int i = 0; i < n; ++i) users[graphs.graphIndex(i)].push_back(i);
+  std::vector<RelationGraph> out(n);
+  std::atomic<int> next{0};
+  auto worker = [&] {
+    Scratch scratch;
+    for (int k = next++; k < graphs.numGraphs(); k = next++) {
+      if (users[k].empty()) continue;
+      Builder builder(instance, graphs, users[k].front(), scratch);
+      const std::shared_ptr<const ComponentGraph> shared = builder.build();
+      for (int i : users[k]) {
+        const StateGraph& g = graphs.graph(i);
+        out[i] = {shared, i, builder.componentOf(g.id(instance.robots[i].start)),
+                  builder.componentOf(g.id(instance.robots[i].target))};
+      }
+      builder.reset();
+    }
+  };
+  const int t = std::max(1, std::min(threads, graphs.numGraphs()));
+  std::vector<std::thread> pool;
+  for (int k = 1; k < t; ++k) pool.emplace_back(worker);
+  worker();
+  for (auto& th : pool) th.join();
+  return out;
+}
+
+}  // namespace fleet_planner
