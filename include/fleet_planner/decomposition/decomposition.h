@@ -37,7 +37,9 @@ struct Decomposition {
   std::vector<DecompositionSubproblem> subproblems;  ///< in solving order
   std::vector<DecompositionStep> steps;              ///< statistics after each step run
   double relations_s = 0.0;                          ///< building the relation graphs
-  bool complete = true;  ///< false if the deadline cut it short (then: one subproblem, all robots)
+  /// False if the deadline cut it short: then the result is that of the steps completed (step 1
+  /// always runs), which is still legal.
+  bool complete = true;
 
   int largest() const;
   /// Largest subproblem / robots (the paper's decomposition rate); 0 for no robots.
