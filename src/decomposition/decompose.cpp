@@ -80,7 +80,7 @@ Decomposition decompose(const Instance& instance, const FleetGraphs& graphs, con
   if (options.last_step >= 4 && !deadline.expired()) {
     t = std::chrono::steady_clock::now();
     for (std::size_t c = 0; c < clusters.size(); ++c) {
-      levels[c] = detail::bipartitionLevels(oracle, clusters[c], levels[c], deadline);
+      levels[c] = detail::bipartitionLevels(oracle, clusters[c], levels[c], deadline, options.peel_levels);
     }
     d.steps.push_back(stats(4, flat(), since(t)));
   }

@@ -73,8 +73,10 @@ std::vector<std::vector<int>> bipartitionClusters(DependencyOracle& oracle, cons
 /// Algorithm 3, first half: strongly connected components of the solving-order graph of one
 /// cluster, in solving order.
 std::vector<std::vector<int>> initialLevels(DependencyOracle& oracle, const std::vector<int>& cluster);
-/// Algorithm 3, second half, with Algorithm 4: bipartition each level until none splits.
+/// Algorithm 3, second half, with Algorithm 4: bipartition each level until none splits; with
+/// `peel`, first peel off robots that can go before or after all others of their level.
 std::vector<std::vector<int>> bipartitionLevels(DependencyOracle& oracle, const std::vector<int>& cluster,
-                                                const std::vector<std::vector<int>>& levels, const Deadline& deadline);
+                                                const std::vector<std::vector<int>>& levels, const Deadline& deadline,
+                                                bool peel);
 
 }  // namespace fleet_planner::detail

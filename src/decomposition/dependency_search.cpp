@@ -23,6 +23,20 @@ std::optional<std::vector<int>> searchPathSats(const RelationGraph& r, const Sat
     for (int i = g.sat_begin[c]; i < g.sat_begin[c + 1]; ++i) k += g.sats[i] / 2 != r.robot;
     return k;
   };
+  // Entering `next` from `c` costs the SATs `next` has that `c` has not: a path that stays near
+  // one SAT across several components pays for it once (an approximation of counting distinct
+  // SATs, which no shortest-path label can do exactly).
+  auto stepCost = [&](int c, int next) {
+    int k = 0;
+    int i = g.sat_begin[c];
+    for (int j = g.sat_begin[next]; j < g.sat_begin[next + 1]; ++j) {
+      const int s = g.sats[j];
+      while (i < g.sat_begin[c + 1] && g.sats[i] < s) ++i;
+      const bool shared = i < g.sat_begin[c + 1] && g.sats[i] == s;
+      k += !shared && s / 2 != r.robot;
+    }
+    return k;
+  };
   if (r.start < 0 || r.target < 0 || !passable(r.start) || !passable(r.target)) return std::nullopt;
   constexpr int kInf = std::numeric_limits<int>::max();
   std::vector<int> dist(n, kInf), parent(n, -1);
@@ -37,9 +51,10 @@ std::optional<std::vector<int>> searchPathSats(const RelationGraph& r, const Sat
     if (c == r.target) break;
     for (int k = g.edge_begin[c]; k < g.edge_begin[c + 1]; ++k) {
       const int next = g.edges[k];
-      if (dist[next] != kInf && dist[next] <= d + cost(next)) continue;
+      const int nd = d + stepCost(c, next);
+      if (dist[next] != kInf && dist[next] <= nd) continue;
       if (!passable(next)) continue;
-      dist[next] = d + cost(next);
+      dist[next] = nd;
       parent[next] = c;
       open.push({dist[next], next});
     }

@@ -205,7 +205,8 @@ std::vector<std::vector<int>> initialLevels(DependencyOracle& oracle, const std:
 }
 
 std::vector<std::vector<int>> bipartitionLevels(DependencyOracle& oracle, const std::vector<int>& cluster,
-                                                const std::vector<std::vector<int>>& levels, const Deadline& deadline) {
+                                                const std::vector<std::vector<int>>& levels, const Deadline& deadline,
+                                                bool peel) {
   const int n = oracle.robots();
   LevelSplitter splitter(oracle, cluster);
   std::vector<std::vector<int>> out;
@@ -216,6 +217,41 @@ std::vector<std::vector<int>> bipartitionLevels(DependencyOracle& oracle, const 
       for (int r : levels[m]) later[r] = 1;
     }
     std::vector<int> rest = levels[k];
+    std::vector<std::vector<int>> tail;  // peeled to go last, the last one first
+    // Peeling (beyond the paper): a robot that can go before all the others of the level, or
+    // after all of them, becomes a level of its own; repeat while one can.
+    for (bool peeled = peel; peeled && rest.size() > 1 && !deadline.expired();) {
+      peeled = false;
+      const Mask others = maskOf(rest, n);
+      const Mask base = LevelSplitter::with(splitter.targetsOf(earlier), splitter.startsOf(later));
+      // Every other robot of the level must still have its way once i's SAT is avoided too.
+      auto othersKeepClearOf = [&](int i, int sat) {
+        Mask avoid = base;
+        avoid[sat] = 1;
+        for (int j : rest) {
+          if (j != i && !oracle.sats(j, splitter.avail(), avoid)) return false;
+        }
+        return true;
+      };
+      for (int i : rest) {
+        Mask rest_but_i = others;
+        rest_but_i[i] = 0;
+        if (oracle.sats(i, splitter.avail(), LevelSplitter::with(base, splitter.startsOf(rest_but_i))) &&
+            othersKeepClearOf(i, 2 * i + 1)) {
+          out.push_back({i});  // first: clear of every start still waiting; the others of its target
+          earlier[i] = 1;
+        } else if (oracle.sats(i, splitter.avail(), LevelSplitter::with(base, splitter.targetsOf(rest_but_i))) &&
+                   othersKeepClearOf(i, 2 * i)) {
+          tail.push_back({i});  // last: clear of every target reached before it; the others of its start
+          later[i] = 1;
+        } else {
+          continue;
+        }
+        rest.erase(std::find(rest.begin(), rest.end(), i));
+        peeled = true;
+        break;
+      }
+    }
     while (!rest.empty()) {
       if (deadline.expired()) {
         out.push_back(rest);
@@ -226,6 +262,10 @@ std::vector<std::vector<int>> bipartitionLevels(DependencyOracle& oracle, const 
       for (int r : major) earlier[r] = 1;
       out.push_back(std::move(major));
       rest = std::move(remain);
+    }
+    for (auto it = tail.rbegin(); it != tail.rend(); ++it) {
+      for (int r : *it) earlier[r] = 1;
+      out.push_back(*it);
     }
   }
   return out;

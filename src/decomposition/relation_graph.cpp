@@ -69,12 +69,13 @@ class Builder {
         const Cell c{p.x + offset.x, p.y + offset.y};
         for (int h = 0; h < kHeadings; ++h) {
           for (const Cell& d : cells_.body(h).cells()) mark(g_.id({c.x - d.x, c.y - d.y, h}), sat);
-          for (Action a : kMoves) {
+          // A move sweeps only its two footprints, each related on its own; a rotation sweeps
+          // more, so a state is also related to what its rotations sweep (its reverse rotation,
+          // with the same sweep, relates the state it turns to).
+          for (Action a : {Action::RotateCcw, Action::RotateCw}) {
             for (const Cell& d : cells_.swept(h, a).cells()) {
               const StateId u = g_.id({c.x - d.x, c.y - d.y, h});
-              if (u == kNoState || !g_.allows(u, a)) continue;
-              mark(u, sat);
-              mark(g_.next(u, a), sat);
+              if (u != kNoState && g_.allows(u, a)) mark(u, sat);
             }
           }
         }

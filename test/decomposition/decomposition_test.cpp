@@ -433,6 +433,7 @@ TEST(Decomposition, RandomInstancesLegalDeterministicAndPareto) {
   EXPECT_EQ(pareto_failures, 0);
   // The steps after the first must matter on some of these instances, or the test pins little.
   EXPECT_GT(split_any, 0);
+  for (int k = 2; k <= 4; ++k) EXPECT_GT(improved_by[k], 0) << "step " << k << " never shrank the largest subproblem";
   std::cout << "[ random    ] " << made << " instances, " << skipped << " seeds skipped (generator), " << split_any
             << " improved by steps 2-4 (step 2: " << improved_by[2] << ", step 3: " << improved_by[3]
             << ", step 4: " << improved_by[4] << "), " << seconds << " s\n";

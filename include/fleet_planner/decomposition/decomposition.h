@@ -18,6 +18,9 @@ namespace fleet_planner {
 struct DecompositionOptions {
   int last_step = 4;
   int threads = 1;  ///< for the per-robot relation graphs; the result does not depend on it
+  /// Step 4 also peels off, one by one, robots that can go before or after all the others of
+  /// their level (beyond the paper; legal by the same conditions). False: Algorithm 4 alone.
+  bool peel_levels = true;
 };
 
 struct DecompositionSubproblem {

@@ -3,8 +3,8 @@
 /// component connectivity graph: a complete search for a path from the robot's start component
 /// to its target component that enters only components whose SATs pass a filter, returning the
 /// SATs the path is related to. Among paths it prefers those related to fewer SATs (Dijkstra,
-/// each component costing its number of SATs), so that robots depend on as few others as they
-/// can.
+/// a step into a component costing the SATs it adds to those of the component left), so that
+/// robots depend on as few others as they can.
 #include <optional>
 #include <vector>
 

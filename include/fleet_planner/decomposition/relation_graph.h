@@ -2,8 +2,11 @@
 /// A robot's component connectivity graph G^c_i (paper: "Component connectivity graph").
 ///
 /// SATs are the robots' starts and targets: SAT 2j is robot j's start, 2j + 1 its target. A
-/// state is related to a SAT when the robot's footprint there, or the cells it sweeps on an edge
-/// into or out of it, overlap the SAT's footprint (r_s, r_t). States are grouped into strongly
+/// state is related to a SAT when the robot's footprint there, or the cells it sweeps rotating
+/// out of it, overlap the SAT's footprint. This is the paper's r_s / r_t without the edge
+/// clause for moves: a move sweeps only its two footprints, each already related on its own,
+/// so a path through unrelated states still keeps clear of the SAT (the property legality
+/// needs), while related regions are not dilated by one step. States are grouped into strongly
 /// connected components of equal relations (edges between differently related states are
 /// ignored); the components, each with its SATs, form the graph the dependency searches run on.
 ///
