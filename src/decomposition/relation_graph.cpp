@@ -13,21 +13,25 @@ namespace {
 
 constexpr Action kMoves[] = {Action::Forward, Action::Backward, Action::RotateCcw, Action::RotateCw};
 
+// What Tarjan's search reads and writes per state, in one record: one cache line per visit.
+struct Visit {
+  std::int32_t rel = 0;     // relation id (0 = unrelated)
+  std::int32_t index = -1;  // DFS order; -1 = not visited
+  std::int32_t low = 0;
+  std::int32_t comp = -1;   // component; -1 while on the stack
+};
+
 // Per-thread arrays over state ids, reused from graph to graph (and left clean after each).
 struct Scratch {
-  std::vector<std::int32_t> stamp, rel, index, low, comp, count;
-  std::vector<std::uint8_t> on_stack;
+  std::vector<Visit> visit;
+  std::vector<std::int32_t> stamp, count;
   std::vector<StateId> stack;
   std::vector<std::pair<StateId, int>> calls;
   void resize(std::size_t n) {
     if (stamp.size() >= n) return;
+    visit.assign(n, Visit{});
     stamp.assign(n, -1);
-    rel.assign(n, 0);
-    index.assign(n, -1);
-    low.assign(n, 0);
-    comp.assign(n, -1);
     count.assign(n, 0);
-    on_stack.assign(n, 0);
   }
 };
 
@@ -43,19 +47,15 @@ class Builder {
     components();
     return assemble();
   }
-  int componentOf(StateId s) const { return s_.comp[s]; }
+  int componentOf(StateId s) const { return s_.visit[s].comp; }
 
   // Leaves the scratch arrays as found.
   void reset() {
     for (StateId u : touched_) {
-      s_.rel[u] = 0;
       s_.count[u] = 0;
       s_.stamp[u] = -1;
     }
-    for (StateId u = 0; u < g_.stateIdCount(); ++u) {
-      s_.index[u] = -1;
-      s_.comp[u] = -1;
-    }
+    std::fill(s_.visit.begin(), s_.visit.begin() + g_.stateIdCount(), Visit{});
   }
 
  private:
@@ -103,7 +103,7 @@ class Builder {
         rel_sats_.emplace_back(first, last);
         by_hash[h].push_back(id);
       }
-      s_.rel[touched_[k]] = id;
+      s_.visit[touched_[k]].rel = id;
     }
   }
 
@@ -115,13 +115,12 @@ class Builder {
     pairs_.push_back({u, sat});
   }
 
-  // Tarjan's strongly connected components, iterative, over edges within one relation id; every
-  // edge that may leave a component (other relation, tree edge, edge into a finished
-  // component) is kept for assemble(). Edges to states on the stack stay inside one.
+  // Tarjan's strongly connected components, iterative, over edges within one relation id.
   void components() {
     int counter = 0;
+    std::vector<Visit>& vis = s_.visit;
     for (StateId root = 0; root < g_.stateIdCount(); ++root) {
-      if (!g_.valid(root) || s_.index[root] >= 0) continue;
+      if (!g_.valid(root) || vis[root].index >= 0) continue;
       open(root, counter);
       while (!s_.calls.empty()) {
         const StateId u = s_.calls.back().first;
@@ -130,47 +129,38 @@ class Builder {
           const Action a = kMoves[s_.calls.back().second++];
           if (!g_.allows(u, a)) continue;
           const StateId v = g_.next(u, a);
-          if (s_.rel[v] != s_.rel[u]) {
-            links_.push_back({u, v});
-            continue;
-          }
-          if (s_.index[v] < 0) {
-            links_.push_back({u, v});  // a tree edge crosses components when v's closes first
+          const Visit& w = vis[v];
+          if (w.rel != vis[u].rel) continue;
+          if (w.index < 0) {
             open(v, counter);
             descended = true;
             break;
           }
-          if (s_.on_stack[v]) {
-            s_.low[u] = std::min(s_.low[u], s_.index[v]);
-          } else {
-            links_.push_back({u, v});  // into a finished component
-          }
+          if (w.comp < 0) vis[u].low = std::min(vis[u].low, w.index);  // still on the stack
         }
         if (descended) continue;
-        if (s_.low[u] == s_.index[u]) {
-          StateId w;
+        if (vis[u].low == vis[u].index) {
+          StateId x;
           do {
-            w = s_.stack.back();
+            x = s_.stack.back();
             s_.stack.pop_back();
-            s_.on_stack[w] = 0;
-            s_.comp[w] = num_comps_;
-          } while (w != u);
-          comp_rel_.push_back(s_.rel[u]);
+            vis[x].comp = num_comps_;
+          } while (x != u);
+          comp_rel_.push_back(vis[u].rel);
           ++num_comps_;
         }
         s_.calls.pop_back();
         if (!s_.calls.empty()) {
           const StateId parent = s_.calls.back().first;
-          s_.low[parent] = std::min(s_.low[parent], s_.low[u]);
+          vis[parent].low = std::min(vis[parent].low, vis[u].low);
         }
       }
     }
   }
 
   void open(StateId v, int& counter) {
-    s_.index[v] = s_.low[v] = counter++;
+    s_.visit[v].index = s_.visit[v].low = counter++;
     s_.stack.push_back(v);
-    s_.on_stack[v] = 1;
     s_.calls.push_back({v, 0});
   }
 
@@ -181,10 +171,14 @@ class Builder {
       out->sats.insert(out->sats.end(), list.begin(), list.end());
       out->sat_begin.push_back(static_cast<std::int32_t>(out->sats.size()));
     }
+    // Edges between components, in one sequential pass.
     std::vector<std::pair<std::int32_t, std::int32_t>> cross;
-    cross.reserve(links_.size());
-    for (const auto& [u, v] : links_) {
-      if (s_.comp[u] != s_.comp[v]) cross.push_back({s_.comp[u], s_.comp[v]});
+    for (StateId u = 0; u < g_.stateIdCount(); ++u) {
+      if (!g_.valid(u)) continue;
+      const std::int32_t cu = s_.visit[u].comp;
+      g_.forEachSuccessor(u, [&](Action, StateId v) {
+        if (s_.visit[v].comp != cu) cross.push_back({cu, s_.visit[v].comp});
+      });
     }
     std::sort(cross.begin(), cross.end());
     cross.erase(std::unique(cross.begin(), cross.end()), cross.end());
@@ -205,7 +199,6 @@ class Builder {
   std::vector<std::pair<StateId, int>> pairs_;
   std::vector<std::vector<int>> rel_sats_;
   std::vector<int> comp_rel_;
-  std::vector<std::pair<StateId, StateId>> links_;
   int num_comps_ = 0;
 };
 

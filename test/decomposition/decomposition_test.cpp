@@ -134,9 +134,10 @@ std::string describe(const Decomposition& d) {
 }
 
 // Decomposes with `last_step`, asserting the result well formed and legal.
-Decomposition decomposeChecked(const World& w, int last_step) {
+Decomposition decomposeChecked(const World& w, int last_step, bool peel_levels = true) {
   DecompositionOptions options;
   options.last_step = last_step;
+  options.peel_levels = peel_levels;
   const Decomposition d = decompose(w.instance, w.graphs, options);
   EXPECT_TRUE(wellFormed(w.instance, d, last_step)) << "last_step " << last_step;
   EXPECT_TRUE(legal(w.instance, w.graphs, d)) << "last_step " << last_step;
@@ -147,7 +148,7 @@ Decomposition decomposeChecked(const World& w, int last_step) {
 // Figure 1 of the paper, exactly as in its caption, on the plus-shaped 3 x 3 map. The caption
 // gives cells only; the headings are chosen along each robot's line of travel, so nobody needs
 // to turn. Under this model the instance behaves as the caption says: no robot's states are
-// related to the other's start or target cells (a1 only ever faces along x = 1, a2 along y = 1).
+// related to the other's start or target cells (a1 only faces -y on column x = 1, a2 +x on row y = 1).
 
 GridMap plusMap() { return mapFromRows({"@.@", "...", "@.@"}); }
 
@@ -271,18 +272,21 @@ World levelSplitWorld() {
 
 TEST(Decomposition, LevelBipartitionSplitsAnInitialLevel) {
   const World w = levelSplitWorld();
-  const Decomposition d = decomposeChecked(w, 4);
-  ASSERT_EQ(d.steps.size(), 4u);
-  EXPECT_EQ(d.steps[1].subproblems, 1) << describe(d);
-  EXPECT_EQ(d.steps[1].largest, 3) << describe(d);
-  EXPECT_EQ(d.steps[2].subproblems, 2) << describe(d);
-  EXPECT_EQ(d.steps[2].largest, 2) << describe(d);
-  EXPECT_EQ(d.steps[3].subproblems, 3) << describe(d);
-  EXPECT_EQ(d.steps[3].largest, 1) << describe(d);
-  EXPECT_LT(d.steps[3].largest, d.steps[2].largest);
-  ASSERT_EQ(d.subproblems.size(), 3u);
-  EXPECT_EQ(d.subproblems[0].robots, std::vector<int>{w.index("C")}) << describe(d);
-  for (const auto& s : d.subproblems) EXPECT_EQ(s.cluster, d.subproblems[0].cluster);
+  for (bool peel : {false, true}) {
+    SCOPED_TRACE(peel ? "with peeling" : "Algorithm 4 alone");
+    const Decomposition d = decomposeChecked(w, 4, peel);
+    ASSERT_EQ(d.steps.size(), 4u);
+    EXPECT_EQ(d.steps[1].subproblems, 1) << describe(d);
+    EXPECT_EQ(d.steps[1].largest, 3) << describe(d);
+    EXPECT_EQ(d.steps[2].subproblems, 2) << describe(d);
+    EXPECT_EQ(d.steps[2].largest, 2) << describe(d);
+    EXPECT_EQ(d.steps[3].subproblems, 3) << describe(d);
+    EXPECT_EQ(d.steps[3].largest, 1) << describe(d);
+    EXPECT_LT(d.steps[3].largest, d.steps[2].largest);
+    ASSERT_EQ(d.subproblems.size(), 3u);
+    EXPECT_EQ(d.subproblems[0].robots, std::vector<int>{w.index("C")}) << describe(d);
+    for (const auto& s : d.subproblems) EXPECT_EQ(s.cluster, d.subproblems[0].cluster);
+  }
   // Step 3 alone: C first, then A and B together.
   const Decomposition three = decomposeChecked(w, 3);
   EXPECT_EQ(robotLists(three), (std::vector<std::vector<int>>{{w.index("C")}, {w.index("A"), w.index("B")}}))
@@ -408,6 +412,15 @@ TEST(Decomposition, RandomInstancesLegalDeterministicAndPareto) {
     DecompositionOptions two_threads;
     two_threads.threads = 2;
     ASSERT_TRUE(sameSubproblems(by_step[3], decompose(instance, graphs, two_threads))) << "seed " << seed << ": threads";
+    // Algorithm 4 alone (no peeling): legal too, and still a refinement of step 3.
+    DecompositionOptions paper_only;
+    paper_only.peel_levels = false;
+    const Decomposition plain = decompose(instance, graphs, paper_only);
+    ASSERT_TRUE(wellFormed(instance, plain, 4)) << "seed " << seed << " without peeling";
+    ASSERT_TRUE(legal(instance, graphs, plain)) << "seed " << seed << " without peeling";
+    EXPECT_TRUE(refines(plain, by_step[2], n)) << "seed " << seed << " without peeling\n  " << describe(by_step[2])
+                                               << "\n  " << describe(plain);
+    EXPECT_LE(plain.largest(), by_step[2].largest()) << "seed " << seed << " without peeling";
     for (int k = 1; k < 4; ++k) {
       // Running more steps repeats the earlier ones: the statistics agree.
       for (int j = 0; j < k; ++j) {
