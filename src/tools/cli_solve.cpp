@@ -19,6 +19,7 @@ void addSolveCommand(CLI::App& app) {
     std::uint64_t seed = 0;
     std::string out;
     int threads = 2;
+    bool details = false;
   };
   auto o = std::make_shared<Options>();
   addProblemOptions(cmd, o->problem);
@@ -32,6 +33,7 @@ void addSolveCommand(CLI::App& app) {
   cmd->add_option("--seed", o->seed, "random seed (same seed, same plan)");
   cmd->add_option("--out", o->out, "write the plan (YAML) here on success");
   cmd->add_option("--threads", o->threads, "threads for graphs and relation graphs")->check(CLI::PositiveNumber);
+  cmd->add_flag("--details", o->details, "add the solved subproblems (robot ids, status, time, delay) to the JSON");
   cmd->callback([o] {
     const auto t0 = std::chrono::steady_clock::now();
     const Deadline deadline = Deadline::in(o->time_limit);
@@ -70,6 +72,16 @@ void addSolveCommand(CLI::App& app) {
                      {"solved_subproblems", result.subproblems.size()},
                      {"max_solved_subproblem", largest},
                      {"merges", result.merges}};
+    if (o->details) {
+      nlohmann::json list = nlohmann::json::array();
+      for (const auto& s : result.subproblems) {
+        nlohmann::json ids = nlohmann::json::array();
+        for (int r : s.robots) ids.push_back(p.instance.robots[r].id);
+        list.push_back({{"robots", ids}, {"cluster", s.cluster}, {"level", s.level}, {"status", statusName(s.status)},
+                        {"time_s", s.time_s}, {"delay", s.delay}});
+      }
+      j["subproblem_details"] = list;
+    }
     if (result.success()) {
       j["soc"] = result.metrics.soc;
       j["makespan"] = result.metrics.makespan;

@@ -1,0 +1,160 @@
+// The layered planner: valid and deterministic plans from both backends on seeded random
+// instances, the paper's Figure 1 instances, and the safeguard that merges a failed subproblem.
+#include "fleet_planner/layered_planner.h"
+
+#include <gtest/gtest.h>
+
+#include <iostream>
+
+#include "fleet_planner/core/errors.h"
+#include "fleet_planner/core/instance_generator.h"
+#include "fleet_planner/core/plan_validator.h"
+#include "fleet_planner/core/random.h"
+#include "fleet_planner/solvers/registry.h"
+#include "test_maps.h"
+
+namespace fleet_planner {
+namespace {
+
+Robot dot(const std::string& id, GridPose s, GridPose t) {
+  Robot r;
+  r.id = id;
+  r.footprint = Footprint::circle(0.4);
+  r.start = s;
+  r.target = t;
+  return r;
+}
+
+std::vector<Footprint> footprintsOf(const Instance& in) {
+  std::vector<Footprint> f;
+  for (const auto& r : in.robots) f.push_back(r.footprint);
+  return f;
+}
+
+LayeredResult plan(const GridMap& map, const Instance& in, const std::string& backend, bool layered = true,
+                   double seconds = 5.0) {
+  const FleetGraphs graphs(map, footprintsOf(in));
+  LayeredOptions o;
+  o.backend = backend;
+  o.decompose = layered;
+  return planLayered(map, in, graphs, o, Deadline::in(seconds));
+}
+
+GridMap randomMap(std::uint64_t seed) {
+  Rng rng(seed);
+  const int w = 16 + static_cast<int>(rng.uniformInt(0, 8)), h = 14 + static_cast<int>(rng.uniformInt(0, 8));
+  std::vector<std::string> rows(h, std::string(w, '.'));
+  for (int k = 0; k < w * h / 12; ++k) rows[rng.uniformInt(0, h - 1)][rng.uniformInt(0, w - 1)] = '@';
+  return test::mapFromRows(rows);
+}
+
+class LayeredBackends : public ::testing::TestWithParam<std::string> {};
+
+// 500 seeded random instances per backend (1000 plans in all): every returned plan is valid,
+// and on every tenth seed a second run gives the same plan. Instances are only individually
+// solvable (as the paper's generator makes them), so some are jointly unsolvable or too hard
+// for the short limit: how many get solved is a benchmark figure, not asserted here beyond
+// "most" (timing on a loaded machine must not make this test flaky).
+TEST_P(LayeredBackends, RandomInstancesGiveValidDeterministicPlans) {
+  int solved = 0, tried = 0, compared = 0;
+  for (std::uint64_t seed = 1; seed <= 500; ++seed) {
+    const GridMap map = randomMap(seed);
+    GeneratorOptions g;
+    g.robots = 2 + static_cast<int>(seed % 6);
+    g.seed = seed;
+    g.max_size = 1.0;
+    Instance in;
+    try {
+      in = generateInstance(map, g);
+    } catch (const InvalidInput&) {
+      continue;
+    }
+    ++tried;
+    const LayeredResult a = plan(map, in, GetParam(), true, 0.25);
+    if (!a.success()) {
+      EXPECT_FALSE(a.reason.empty()) << "seed " << seed << ": a failure must say why";
+      continue;
+    }
+    ++solved;
+    const ValidationResult v = validatePlan(map, in, a.plan);
+    EXPECT_TRUE(v.valid()) << "seed " << seed << ": " << v.violation.message;
+    if (seed % 10 == 0) {
+      const LayeredResult b = plan(map, in, GetParam(), true, 5.0);
+      if (b.success()) {
+        ++compared;
+        EXPECT_EQ(a.plan.paths, b.plan.paths) << "seed " << seed << ": not deterministic";
+      }
+    }
+  }
+  EXPECT_GE(tried, 450);
+  EXPECT_GE(compared, 20);
+  EXPECT_GE(solved, tried / 2) << GetParam() << " solved " << solved << " of " << tried;
+  std::cout << "[ random    ] " << GetParam() << ": " << solved << " of " << tried << " solved within 0.25 s, "
+            << compared << " rerun identical\n";
+}
+
+TEST_P(LayeredBackends, FigureOneBSolvesWithA2First) {
+  // Paper Figure 1 B on a plus-shaped map: a2 crosses through a1's target, so a2 goes first.
+  const GridMap map = test::mapFromRows({"@.@", "...", "@.@"});
+  Instance in;
+  in.robots = {dot("a1", {1, 2, 3}, {1, 1, 3}), dot("a2", {0, 1, 0}, {2, 1, 0})};
+  const LayeredResult r = plan(map, in, GetParam());
+  ASSERT_TRUE(r.success()) << r.reason;
+  ASSERT_EQ(r.subproblems.size(), 2u);
+  EXPECT_EQ(r.subproblems[0].robots, std::vector<int>{1});
+  EXPECT_TRUE(validatePlan(map, in, r.plan).valid());
+}
+
+INSTANTIATE_TEST_SUITE_P(Backends, LayeredBackends, ::testing::Values("la_cbs", "la_lacam"));
+
+// A test-only backend that fails any subproblem of exactly one robot named "stubborn", and is
+// LA-LaCAM otherwise: the planner must merge that subproblem with a neighbour and succeed.
+class Stubborn : public Solver {
+ public:
+  std::string name() const override { return "stubborn_test_backend"; }
+  bool avoidsMovingObstacles() const override { return false; }
+  SolveResult solve(const Subproblem& p) override {
+    if (p.robots.size() == 1 && p.instance->robots[p.robots[0]].id == "stubborn") {
+      SolveResult r;
+      r.status = SolveStatus::Infeasible;
+      r.reason = "refuses to plan alone";
+      return r;
+    }
+    return makeSolver("la_lacam")->solve(p);
+  }
+};
+const bool kStubborn = registerSolver("stubborn_test_backend", [] { return std::make_unique<Stubborn>(); });
+
+TEST(LayeredPlanner, FailedSubproblemIsMergedWithItsNeighbour) {
+  ASSERT_TRUE(kStubborn);
+  const GridMap map = test::freeMap(12, 6);
+  Instance in;
+  in.robots = {dot("a", {0, 0, 0}, {11, 0, 0}), dot("stubborn", {0, 3, 0}, {11, 3, 0}), dot("c", {0, 5, 0}, {11, 5, 0})};
+  const LayeredResult r = plan(map, in, "stubborn_test_backend");
+  ASSERT_TRUE(r.success()) << r.reason;
+  ASSERT_EQ(r.merges.size(), 1u);
+  EXPECT_NE(r.merges[0].find("stubborn"), std::string::npos) << r.merges[0];
+  EXPECT_NE(r.merges[0].find("refuses to plan alone"), std::string::npos) << r.merges[0];
+  EXPECT_EQ(r.subproblems.size(), r.decomposition.subproblems.size() - 1);
+  EXPECT_TRUE(validatePlan(map, in, r.plan).valid());
+}
+
+TEST(LayeredPlanner, RawModeIsOneSubproblem) {
+  const GridMap map = test::freeMap(8, 4);
+  Instance in;
+  in.robots = {dot("a", {0, 0, 0}, {7, 0, 0}), dot("b", {0, 3, 0}, {7, 3, 0})};
+  const LayeredResult r = plan(map, in, "la_cbs", /*layered=*/false);
+  ASSERT_TRUE(r.success()) << r.reason;
+  EXPECT_EQ(r.subproblems.size(), 1u);
+  EXPECT_EQ(r.metrics.soc, 14);
+}
+
+TEST(LayeredPlanner, UnknownBackendThrows) {
+  const GridMap map = test::freeMap(3, 1);
+  Instance in;
+  in.robots = {dot("a", {0, 0, 0}, {2, 0, 0})};
+  EXPECT_THROW(plan(map, in, "nope"), InvalidInput);
+}
+
+}  // namespace
+}  // namespace fleet_planner
