@@ -5,9 +5,11 @@
 /// Serial backends (LA-CBS) plan each subproblem around the timed paths of the earlier ones and
 /// the start footprints of the later ones. Parallel backends (LA-LaCAM) plan around the target
 /// footprints of earlier subproblems and the start footprints of later ones; their paths are
-/// then delayed at their starts until they fit among the earlier paths (Algorithm 5). If a
-/// subproblem fails while time remains, it is merged with a neighbour and the merged one is
-/// solved again (the merges are reported). The final plan always passes the validator.
+/// then delayed at their starts until they fit among the earlier paths (Algorithm 5). Each
+/// subproblem gets a share of the remaining time (at least a quarter, more for a larger part of
+/// the robots left; the last one all of it). If a subproblem fails, or its share runs out, while
+/// time remains, it is merged with a neighbour and the merged one is solved again (the merges
+/// are reported). The final plan always passes the validator.
 #include <string>
 #include <vector>
 

@@ -55,12 +55,18 @@ LayeredResult planLayered(const GridMap& map, const Instance& instance, const Fl
   std::vector<Path> paths(n);
   std::vector<char> done(n, 0);
   const bool serial = solver->avoidsMovingObstacles();
+  int robots_left = n;
   for (std::size_t k = 0; k < order.size();) {
     Subproblem sub;
     sub.instance = &instance;
     sub.graphs = &graphs;
     sub.robots = order[k].robots;
-    sub.deadline = deadline;
+    // A time share: at least a quarter of what is left, more for a larger part of the robots
+    // left; the last subproblem gets all of it. A share that runs out triggers the safeguard.
+    const double share = k + 1 == order.size()
+                             ? 1.0
+                             : std::max(0.25, static_cast<double>(sub.robots.size()) / std::max(1, robots_left));
+    sub.deadline = deadline.within(deadline.remaining() * share);
     sub.seed = options.seed + k;
     for (std::size_t m = k + 1; m < order.size(); ++m) {
       for (int r : order[m].robots) sub.blocked.push_back({r, instance.robots[r].start});
@@ -84,6 +90,7 @@ LayeredResult planLayered(const GridMap& map, const Instance& instance, const Fl
         paths[sub.robots[a]] = std::move(fresh[a]);
         done[sub.robots[a]] = 1;
       }
+      robots_left -= static_cast<int>(sub.robots.size());
       ++k;
       continue;
     }
@@ -102,7 +109,10 @@ LayeredResult planLayered(const GridMap& map, const Instance& instance, const Fl
     const std::size_t first = std::min(k, other);
     result.merges.push_back("subproblem " + std::to_string(k) + " (" + idsOf(instance, order[k].robots) + ") failed: " +
                             solved.reason + "; merged with subproblem " + std::to_string(other));
-    for (int r : order[first].robots) done[r] = 0;
+    for (int r : order[first].robots) {
+      if (done[r]) ++robots_left;
+      done[r] = 0;
+    }
     std::vector<int> joined = order[first].robots;
     joined.insert(joined.end(), order[first + 1].robots.begin(), order[first + 1].robots.end());
     std::sort(joined.begin(), joined.end());
