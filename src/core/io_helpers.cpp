@@ -47,13 +47,17 @@ std::string formatNumber(double value) {
   return std::string(buffer, result.ptr);
 }
 
+// "\\xNN" for a control character.
+std::string hexEscape(unsigned char c) {
+  const char* digits = "0123456789abcdef";
+  return std::string("\\x") + digits[c >> 4] + digits[c & 15];
+}
+
 std::string quoted(const std::string& text) {
   std::string out = "'";
   for (unsigned char c : text) {
     if (c < 0x20 || c == 0x7f) {
-      char hex[8];
-      std::snprintf(hex, sizeof(hex), "\\x%02x", c);
-      out += hex;
+      out += hexEscape(c);
     } else {
       out += static_cast<char>(c);
     }
@@ -94,9 +98,7 @@ std::string yamlScalar(const std::string& text) {
       out += '\\';
       out += static_cast<char>(c);
     } else if (c < 0x20 || c == 0x7f) {
-      char hex[8];
-      std::snprintf(hex, sizeof(hex), "\\x%02x", c);
-      out += hex;
+      out += hexEscape(c);
     } else {
       out += static_cast<char>(c);
     }

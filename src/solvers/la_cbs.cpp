@@ -191,12 +191,7 @@ class CbsSearch {
     r.paths = toPosePaths(space_, paths);
     return r;
   }
-  SolveResult failure(SolveStatus status, std::string reason) const {
-    SolveResult r;
-    r.status = status;
-    r.reason = std::move(reason);
-    return r;
-  }
+  SolveResult failure(SolveStatus status, std::string reason) const { return failedResult(status, std::move(reason)); }
   SolveResult stopped() const {
     return failure(problem_.deadline.cancelled() ? SolveStatus::Cancelled : SolveStatus::Timeout,
                    problem_.deadline.cancelled() ? "cancelled" : "time limit reached");

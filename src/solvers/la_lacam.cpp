@@ -204,12 +204,7 @@ class LacamSearch {
     return r;
   }
 
-  SolveResult failure(SolveStatus status, std::string reason) const {
-    SolveResult r;
-    r.status = status;
-    r.reason = std::move(reason);
-    return r;
-  }
+  SolveResult failure(SolveStatus status, std::string reason) const { return failedResult(status, std::move(reason)); }
 
   const SearchSpace& space_;
   const Subproblem& problem_;

@@ -10,12 +10,7 @@ namespace fleet_planner {
 
 namespace {
 
-SolveResult make(SolveStatus status, std::string reason) {
-  SolveResult r;
-  r.status = status;
-  r.reason = std::move(reason);
-  return r;
-}
+SolveResult make(SolveStatus status, std::string reason) { return failedResult(status, std::move(reason)); }
 
 // Two agents whose starts, or whose targets, overlap can never be solved.
 std::string overlapProblem(const SearchSpace& space, const Subproblem& problem) {
@@ -68,6 +63,13 @@ SolveResult solveWith(const Subproblem& problem, bool moving_allowed,
   }
   result.stats.time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return result;
+}
+
+SolveResult failedResult(SolveStatus status, std::string reason) {
+  SolveResult r;
+  r.status = status;
+  r.reason = std::move(reason);
+  return r;
 }
 
 std::vector<Path> toPosePaths(const SearchSpace& space, const std::vector<StatePath>& paths) {

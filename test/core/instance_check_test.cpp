@@ -5,6 +5,7 @@
 
 #include "fleet_planner/core/errors.h"
 #include "test_maps.h"
+#include "test_robots.h"
 
 namespace fleet_planner {
 namespace {
@@ -13,11 +14,7 @@ using test::freeMap;
 using test::mapFromRows;
 
 Robot robot(const std::string& id, Footprint f, GridPose start, GridPose target) {
-  Robot r;
-  r.id = id;
-  r.footprint = std::move(f);
-  r.start = start;
-  r.target = target;
+  Robot r = test::makeRobot(id, std::move(f), start, target);
   r.source = "fleet.txt:" + id;
   return r;
 }

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "test_maps.h"
+#include "test_robots.h"
 
 namespace fleet_planner {
 namespace {
@@ -14,17 +15,9 @@ using test::mapFromRows;
 using Kind = Violation::Kind;
 
 Robot robot(const std::string& id, Footprint f, GridPose start, GridPose target) {
-  Robot r;
-  r.id = id;
-  r.footprint = std::move(f);
-  r.start = start;
-  r.target = target;
-  return r;
+  return test::makeRobot(id, std::move(f), start, target);
 }
-
-Robot dot(const std::string& id, GridPose start, GridPose target) {
-  return robot(id, Footprint::circle(0.4), start, target);
-}
+using test::dot;
 
 Violation check(const GridMap& map, const std::vector<Robot>& robots, const std::vector<Path>& paths,
                 ActionModel model = {}) {

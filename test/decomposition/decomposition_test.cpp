@@ -25,7 +25,8 @@
 #include <string>
 #include <vector>
 
-#include "../core/test_maps.h"
+#include "test_maps.h"
+#include "test_robots.h"
 #include "fleet_planner/core/errors.h"
 #include "fleet_planner/core/instance_generator.h"
 #include "fleet_planner/core/random.h"
@@ -36,20 +37,8 @@ namespace {
 
 using test::mapFromRows;
 
-Robot dot(const std::string& id, GridPose start, GridPose target) {
-  Robot r;
-  r.id = id;
-  r.footprint = Footprint::circle(0.4);
-  r.start = start;
-  r.target = target;
-  return r;
-}
-
-std::vector<Footprint> footprintsOf(const Instance& instance) {
-  std::vector<Footprint> fps;
-  for (const Robot& r : instance.robots) fps.push_back(r.footprint);
-  return fps;
-}
+using test::dot;
+using test::footprintsOf;
 
 struct World {
   GridMap map;

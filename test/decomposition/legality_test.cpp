@@ -8,7 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "../core/test_maps.h"
+#include "test_maps.h"
+#include "test_robots.h"
 #include "fleet_planner/core/footprint_cells.h"
 
 namespace fleet_planner {
@@ -17,12 +18,7 @@ namespace {
 using test::mapFromRows;
 
 Robot robot(const std::string& id, GridPose start, GridPose target, Footprint f = Footprint::circle(0.4)) {
-  Robot r;
-  r.id = id;
-  r.footprint = f;
-  r.start = start;
-  r.target = target;
-  return r;
+  return test::makeRobot(id, std::move(f), start, target);
 }
 
 struct Fixture {
@@ -30,12 +26,7 @@ struct Fixture {
   Instance instance;
   FleetGraphs graphs;
   Fixture(GridMap m, std::vector<Robot> robots)
-      : map(std::move(m)), instance{std::move(robots), ""}, graphs(map, footprints(instance)) {}
-  static std::vector<Footprint> footprints(const Instance& instance) {
-    std::vector<Footprint> fps;
-    for (const Robot& r : instance.robots) fps.push_back(r.footprint);
-    return fps;
-  }
+      : map(std::move(m)), instance{std::move(robots), ""}, graphs(map, test::footprintsOf(instance)) {}
   LegalityReport check(const std::vector<std::vector<int>>& subproblems) const {
     return checkLegality(instance, graphs, subproblems);
   }

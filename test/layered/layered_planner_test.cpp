@@ -12,24 +12,13 @@
 #include "fleet_planner/core/random.h"
 #include "fleet_planner/solvers/registry.h"
 #include "test_maps.h"
+#include "test_robots.h"
 
 namespace fleet_planner {
 namespace {
 
-Robot dot(const std::string& id, GridPose s, GridPose t) {
-  Robot r;
-  r.id = id;
-  r.footprint = Footprint::circle(0.4);
-  r.start = s;
-  r.target = t;
-  return r;
-}
-
-std::vector<Footprint> footprintsOf(const Instance& in) {
-  std::vector<Footprint> f;
-  for (const auto& r : in.robots) f.push_back(r.footprint);
-  return f;
-}
+using test::dot;
+using test::footprintsOf;
 
 LayeredResult plan(const GridMap& map, const Instance& in, const std::string& backend, bool layered = true,
                    double seconds = 5.0) {

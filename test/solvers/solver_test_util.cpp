@@ -20,26 +20,7 @@ std::string poseText(const GridPose& p) {
   return out.str();
 }
 
-std::vector<Footprint> footprintsOf(const Instance& instance) {
-  std::vector<Footprint> out;
-  for (const Robot& r : instance.robots) out.push_back(r.footprint);
-  return out;
-}
-
 }  // namespace
-
-Robot makeRobot(const std::string& id, Footprint footprint, GridPose start, GridPose target) {
-  Robot r;
-  r.id = id;
-  r.footprint = std::move(footprint);
-  r.start = start;
-  r.target = target;
-  return r;
-}
-
-Robot dot(const std::string& id, GridPose start, GridPose target) {
-  return makeRobot(id, Footprint::circle(0.4), start, target);
-}
 
 Robot bar(const std::string& id, GridPose start, GridPose target) {
   return makeRobot(id, Footprint::block(-0.5, -0.5, 1.5, 0.5), start, target);

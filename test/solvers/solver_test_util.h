@@ -16,12 +16,10 @@
 #include "fleet_planner/core/plan_validator.h"
 #include "fleet_planner/solvers/solver.h"
 
+#include "test_robots.h"
+
 namespace fleet_planner::test {
 
-/// A robot with the given footprint, start and target.
-Robot makeRobot(const std::string& id, Footprint footprint, GridPose start, GridPose target);
-/// A one-cell robot (circle of radius 0.4).
-Robot dot(const std::string& id, GridPose start, GridPose target);
 /// A two-cell robot: block [-0.5, 1.5] x [-0.5, 0.5], covering its cell and the one ahead.
 Robot bar(const std::string& id, GridPose start, GridPose target);
 /// A seven-cell triangle polygon (nose at +1 forward, base at -1): its cell, the ones ahead,

@@ -17,6 +17,9 @@ namespace fleet_planner {
 SolveResult solveWith(const Subproblem& problem, bool moving_allowed,
                       const std::function<SolveResult(const SearchSpace&, SolveStats&)>& search);
 
+/// A result with that status and reason (no paths).
+SolveResult failedResult(SolveStatus status, std::string reason);
+
 /// Paths of state ids as poses, trailing waits at the end trimmed.
 std::vector<Path> toPosePaths(const SearchSpace& space, const std::vector<StatePath>& paths);
 
