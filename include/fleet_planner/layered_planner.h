@@ -39,6 +39,7 @@ struct SolvedSubproblem {
   std::string reason;
   double time_s = 0.0;
   int delay = 0;  ///< steps its paths were delayed by the merge (parallel backends)
+  SolveStats stats;  ///< the backend's statistics for its last attempt
 };
 
 struct LayeredResult {

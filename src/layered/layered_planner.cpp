@@ -83,6 +83,7 @@ LayeredResult planLayered(const GridMap& map, const Instance& instance, const Fl
     order[k].status = solved.status;
     order[k].reason = solved.reason;
     order[k].time_s = solved.stats.time_s;
+    order[k].stats = solved.stats;
     if (solved.success()) {
       std::vector<Path> fresh = solved.paths;
       if (!serial) order[k].delay = delayToFit(graphs, paths, done, sub.robots, fresh);
@@ -108,7 +109,10 @@ LayeredResult planLayered(const GridMap& map, const Instance& instance, const Fl
     const std::size_t other = k + 1 < order.size() ? k + 1 : k - 1;
     const std::size_t first = std::min(k, other);
     result.merges.push_back("subproblem " + std::to_string(k) + " (" + idsOf(instance, order[k].robots) + ") failed: " +
-                            solved.reason + "; merged with subproblem " + std::to_string(other));
+                            solved.reason + " (after " + std::to_string(solved.stats.time_s).substr(0, 5) + " s, " +
+                            std::to_string(solved.stats.high_level_nodes) + " high-level nodes, " +
+                            std::to_string(solved.stats.low_level_expansions) + " expansions); merged with subproblem " +
+                            std::to_string(other));
     for (int r : order[first].robots) {
       if (done[r]) ++robots_left;
       done[r] = 0;

@@ -78,7 +78,8 @@ void addSolveCommand(CLI::App& app) {
         nlohmann::json ids = nlohmann::json::array();
         for (int r : s.robots) ids.push_back(p.instance.robots[r].id);
         list.push_back({{"robots", ids}, {"cluster", s.cluster}, {"level", s.level}, {"status", statusName(s.status)},
-                        {"time_s", s.time_s}, {"delay", s.delay}});
+                        {"time_s", s.time_s}, {"delay", s.delay}, {"high_level_nodes", s.stats.high_level_nodes},
+                        {"low_level_expansions", s.stats.low_level_expansions}});
       }
       j["subproblem_details"] = list;
     }
