@@ -55,6 +55,45 @@ Action stepAction(const StateGraph& graph, StateId from, StateId to) {
 
 namespace {
 
+// (state, time) -> node index, open addressing: one allocation, freed at once when the
+// deadline comes (a node-per-entry hash map of millions of nodes takes most of a second).
+class NodeTable {
+ public:
+  NodeTable() : slots_(1 << 12, {~0ULL, -1}) {}
+  int* find(std::uint64_t key) {
+    for (std::size_t i = slot(key);; i = (i + 1) & (slots_.size() - 1)) {
+      if (slots_[i].first == key) return &slots_[i].second;
+      if (slots_[i].second < 0) return nullptr;
+    }
+  }
+  void set(std::uint64_t key, int node) {
+    if (int* existing = find(key)) {
+      *existing = node;
+      return;
+    }
+    if (2 * (size_ + 1) > slots_.size()) grow();
+    place(key, node);
+    ++size_;
+  }
+
+ private:
+  std::size_t slot(std::uint64_t key) const { return (key * 0x9e3779b97f4a7c15ULL >> 20) & (slots_.size() - 1); }
+  void place(std::uint64_t key, int node) {
+    std::size_t i = slot(key);
+    while (slots_[i].second >= 0) i = (i + 1) & (slots_.size() - 1);
+    slots_[i] = {key, node};
+  }
+  void grow() {
+    std::vector<std::pair<std::uint64_t, int>> old(slots_.size() * 2, {~0ULL, -1});
+    old.swap(slots_);
+    for (const auto& [key, node] : old) {
+      if (node >= 0) place(key, node);
+    }
+  }
+  std::vector<std::pair<std::uint64_t, int>> slots_;
+  std::size_t size_ = 0;
+};
+
 struct Node {
   StateId s;
   int t;  // collapsed time
@@ -89,7 +128,7 @@ LowLevelResult spaceTimeAStar(const SearchSpace& space, int a, const AgentConstr
   };
 
   std::vector<Node> nodes;
-  std::unordered_map<std::uint64_t, int> seen;
+  NodeTable seen;
   auto key = [](StateId s, int t) { return (static_cast<std::uint64_t>(t) << 32) | static_cast<std::uint32_t>(s); };
   auto worse = [&nodes](int x, int y) {
     const Node &a1 = nodes[x], &b1 = nodes[y];
@@ -101,8 +140,11 @@ LowLevelResult spaceTimeAStar(const SearchSpace& space, int a, const AgentConstr
   std::priority_queue<int, std::vector<int>, decltype(worse)> open(worse);
 
   if (constraints.poseForbidden(cells, g.pose(start), 0)) return result;
-  nodes.push_back({start, 0, 0, space.distance(a, start), 0, -1});
-  seen.emplace(key(start, 0), 0);
+  // Heuristic: the distance, but never less than the time left until the target can be held
+  // (admissible and consistent: it drops by at most one per step).
+  auto heuristic = [&](StateId s, int t) { return std::max(space.distance(a, s), goal_earliest - t); };
+  nodes.push_back({start, 0, 0, heuristic(start, 0), 0, -1});
+  seen.set(key(start, 0), 0);
   open.push(0);
 
   while (!open.empty()) {
@@ -113,7 +155,7 @@ LowLevelResult spaceTimeAStar(const SearchSpace& space, int a, const AgentConstr
     const int index = open.top();
     open.pop();
     const Node node = nodes[index];
-    if (seen[key(node.s, node.t)] != index) continue;  // superseded by a cheaper duplicate
+    if (*seen.find(key(node.s, node.t)) != index) continue;  // superseded by a cheaper duplicate
     ++result.expansions;
     if (node.s == target && node.g >= goal_earliest) {
       for (int i = index; i >= 0; i = nodes[i].parent) result.path.push_back(nodes[i].s);
@@ -123,16 +165,16 @@ LowLevelResult spaceTimeAStar(const SearchSpace& space, int a, const AgentConstr
     }
     const int t_next = std::min(node.t + 1, static_from);
     auto consider = [&](Action act, StateId next) {
-      const int h = space.distance(a, next);
-      if (h < 0) return;
+      if (space.distance(a, next) < 0) return;
+      const int h = heuristic(next, node.g + 1);
       if (!space.allows(a, node.s, act)) return;
       if (constraints.poseForbidden(cells, g.pose(next), node.g + 1) || stepBlocked(node.s, act, node.g)) return;
       // Below the static layer time equals g, so a duplicate is never cheaper; in it, it can be.
       const std::uint64_t k = key(next, t_next);
-      const auto it = seen.find(k);
-      if (it != seen.end() && nodes[it->second].g <= node.g + 1) return;
+      const int* known = seen.find(k);
+      if (known != nullptr && nodes[*known].g <= node.g + 1) return;
       const int c = options.conflicts ? node.conflicts + options.conflicts(node.s, act, node.g) : 0;
-      seen[k] = static_cast<int>(nodes.size());
+      seen.set(k, static_cast<int>(nodes.size()));
       nodes.push_back({next, t_next, node.g + 1, node.g + 1 + h, c, index});
       open.push(static_cast<int>(nodes.size()) - 1);
     };
