@@ -12,15 +12,9 @@ namespace fleet_planner {
 
 namespace {
 
-std::string poseText(const GridPose& p) {
-  std::ostringstream out;
-  out << "(" << p.x << "," << p.y << "," << p.heading << ")";
-  return out.str();
-}
-
 void checkPose(const GridMap& map, const Robot& robot, const FootprintCells& cells,
                const GridPose& pose, const char* what) {
-  const std::string where = robotLabel(robot) + ": " + what + " " + poseText(pose);
+  const std::string where = robotLabel(robot) + ": " + what + " " + toString(pose);
   if (!validHeading(pose.heading)) throw InvalidInput(where + " has heading outside 0..3");
   if (!map.inside(pose.x, pose.y)) {
     throw InvalidInput(where + " is off the " + std::to_string(map.width()) + " x " +
@@ -73,12 +67,12 @@ SolvabilityReport checkSolvability(const Instance& instance, const FleetGraphs& 
     const StateGraph& g = graphs.graph(i);
     const StateId s = g.id(r.start), t = g.id(r.target);
     if (!g.valid(s)) {
-      report.problems.push_back({i, robotLabel(r) + ": start " + poseText(r.start) + " is not a valid state"});
+      report.problems.push_back({i, robotLabel(r) + ": start " + toString(r.start) + " is not a valid state"});
     } else if (!g.valid(t)) {
-      report.problems.push_back({i, robotLabel(r) + ": target " + poseText(r.target) + " is not a valid state"});
+      report.problems.push_back({i, robotLabel(r) + ": target " + toString(r.target) + " is not a valid state"});
     } else if (!isReachable(g, s, t)) {
-      report.problems.push_back({i, robotLabel(r) + ": target " + poseText(r.target) +
-                                        " is not reachable from start " + poseText(r.start) +
+      report.problems.push_back({i, robotLabel(r) + ": target " + toString(r.target) +
+                                        " is not reachable from start " + toString(r.start) +
                                         " for its footprint"});
     }
   }

@@ -11,12 +11,6 @@ namespace fleet_planner {
 
 namespace {
 
-std::string poseText(const GridPose& p) {
-  std::ostringstream out;
-  out << "(" << p.x << "," << p.y << "," << p.heading << ")";
-  return out.str();
-}
-
 // Every cell of `set` at `origin` is on the map and free.
 bool cellsFree(const GridMap& map, const CellSet& set, const GridPose& origin) {
   for (const auto& run : set.runs()) {
@@ -45,13 +39,13 @@ class Checker {
       if (p.empty()) return fail(Violation::Kind::EmptyPath, i, -1, 0, "path is empty");
       if (p.front() != r.start)
         return fail(Violation::Kind::WrongStart, i, -1, 0,
-                    "path starts at " + poseText(p.front()) + ", start is " + poseText(r.start));
+                    "path starts at " + toString(p.front()) + ", start is " + toString(r.start));
       if (p.back() != r.target)
         return fail(Violation::Kind::WrongTarget, i, -1, static_cast<int>(p.size()) - 1,
-                    "path ends at " + poseText(p.back()) + ", target is " + poseText(r.target));
+                    "path ends at " + toString(p.back()) + ", target is " + toString(r.target));
       for (const GridPose& s : p) {
         if (!validHeading(s.heading))
-          return fail(Violation::Kind::IllegalAction, i, -1, -1, "heading of " + poseText(s) + " is not 0..3");
+          return fail(Violation::Kind::IllegalAction, i, -1, -1, "heading of " + toString(s) + " is not 0..3");
       }
     }
     cells_.reserve(n);
@@ -63,7 +57,7 @@ class Checker {
     for (int i = 0; i < n; ++i) {
       if (!cellsFree(map_, cells_[i]->body(plan_.paths[i][0].heading), plan_.paths[i][0]))
         return fail(Violation::Kind::StateInObstacle, i, -1, 0,
-                    "footprint at " + poseText(plan_.paths[i][0]) + " covers a blocked or off-map cell");
+                    "footprint at " + toString(plan_.paths[i][0]) + " covers a blocked or off-map cell");
     }
     if (Violation v = vertexConflicts(0); v.kind != Violation::Kind::None) return v;
 
@@ -75,14 +69,14 @@ class Checker {
         const auto action = actionBetween(from, to, model_);
         if (!action)
           return fail(Violation::Kind::IllegalAction, i, -1, t,
-                      "no action leads from " + poseText(from) + " to " + poseText(to));
+                      "no action leads from " + toString(from) + " to " + toString(to));
         actions[i] = *action;
         if (!cellsFree(map_, cells_[i]->body(to.heading), to))
           return fail(Violation::Kind::StateInObstacle, i, -1, t + 1,
-                      "footprint at " + poseText(to) + " covers a blocked or off-map cell");
+                      "footprint at " + toString(to) + " covers a blocked or off-map cell");
         if (!cellsFree(map_, cells_[i]->swept(from.heading, *action), from))
           return fail(Violation::Kind::SweepInObstacle, i, -1, t,
-                      std::string(actionName(*action)) + " from " + poseText(from) +
+                      std::string(actionName(*action)) + " from " + toString(from) +
                           " sweeps a blocked or off-map cell");
       }
       if (Violation v = vertexConflicts(t + 1); v.kind != Violation::Kind::None) return v;
@@ -92,8 +86,8 @@ class Checker {
           const GridPose& b = stateAt(plan_.paths[j], t);
           if (sweepsOverlap(*cells_[i], a, actions[i], *cells_[j], b, actions[j]))
             return fail(Violation::Kind::TransferConflict, i, j, t,
-                        std::string(actionName(actions[i])) + " from " + poseText(a) + " and " +
-                            actionName(actions[j]) + " from " + poseText(b) + " sweep a common cell");
+                        std::string(actionName(actions[i])) + " from " + toString(a) + " and " +
+                            actionName(actions[j]) + " from " + toString(b) + " sweep a common cell");
         }
       }
     }
@@ -109,7 +103,7 @@ class Checker {
         const GridPose& b = stateAt(plan_.paths[j], t);
         if (footprintsOverlap(*cells_[i], a, *cells_[j], b))
           return fail(Violation::Kind::VertexConflict, i, j, t,
-                      "footprints at " + poseText(a) + " and " + poseText(b) + " overlap");
+                      "footprints at " + toString(a) + " and " + toString(b) + " overlap");
       }
     }
     return {};

@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <chrono>
 
-#include "fleet_planner/core/collision.h"
 #include "fleet_planner/core/errors.h"
 #include "fleet_planner/core/plan_validator.h"
 #include "fleet_planner/layered/plan_merge.h"
@@ -41,12 +40,20 @@ LayeredResult planLayered(const GridMap& map, const Instance& instance, const Fl
     d.last_step = options.last_step;
     d.threads = options.threads;
     result.decomposition = decompose(instance, graphs, d, deadline);
-    for (const auto& s : result.decomposition.subproblems) order.push_back({s.robots, s.cluster, s.level});
+    for (const auto& s : result.decomposition.subproblems) {
+      SolvedSubproblem solved;
+      solved.robots = s.robots;
+      solved.cluster = s.cluster;
+      solved.level = s.level;
+      order.push_back(solved);
+    }
   } else {
     SolvedSubproblem all;
     for (int i = 0; i < n; ++i) all.robots.push_back(i);
     order.push_back(all);
-    result.decomposition.subproblems.push_back({all.robots, 0, 0});
+    DecompositionSubproblem whole;
+    whole.robots = all.robots;
+    result.decomposition.subproblems.push_back(whole);
   }
   result.decompose_s = since(t);
 

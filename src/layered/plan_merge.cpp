@@ -64,9 +64,9 @@ int delayToFit(const FleetGraphs& graphs, const std::vector<Path>& merged, const
           if (tb < lb) {
             if (tb - ta >= 0) forbidden.insert(tb - ta);
           } else {
-            // b parked meets a's step: cannot happen when b's target was blocked for a; if it
-            // does, a must finish that step before b parks: far too late to fix by delaying.
-            forbidden.insert(-1);
+            // b parked for good meets a's step: cannot happen when b's target was blocked for a,
+            // and no delay would fix it; the caller's validation of the merged plan reports it.
+            continue;
           }
         }
         // a parked (from time la + d on) against b's step tb: forbidden when la + d <= tb.

@@ -27,10 +27,6 @@ std::vector<std::int32_t> restrictedDistances(const SearchSpace& space, int a) {
   return dist;
 }
 
-std::string poseText(const GridPose& p) {
-  return "(" + std::to_string(p.x) + "," + std::to_string(p.y) + "," + std::to_string(p.heading) + ")";
-}
-
 }  // namespace
 
 SearchSpace::SearchSpace(const Subproblem& problem)
@@ -75,17 +71,17 @@ SearchSpace::SearchSpace(const Subproblem& problem)
   for (int a = 0; a < numAgents() && problem_.empty(); ++a) {
     const Robot& r = instance_->robots[robots_[a]];
     if (!graph(a).valid(starts_[a])) {
-      problem_ = label(a) + ": start " + poseText(r.start) + " is not a valid state";
+      problem_ = label(a) + ": start " + toString(r.start) + " is not a valid state";
     } else if (!graph(a).valid(targets_[a])) {
-      problem_ = label(a) + ": target " + poseText(r.target) + " is not a valid state";
+      problem_ = label(a) + ": target " + toString(r.target) + " is not a valid state";
     } else if (!allows(a, starts_[a], Action::Wait)) {
-      problem_ = label(a) + ": start " + poseText(r.start) + " overlaps a footprint of another subproblem";
+      problem_ = label(a) + ": start " + toString(r.start) + " overlaps a footprint of another subproblem";
     } else if (!allows(a, targets_[a], Action::Wait)) {
-      problem_ = label(a) + ": target " + poseText(r.target) + " overlaps a footprint of another subproblem";
+      problem_ = label(a) + ": target " + toString(r.target) + " overlaps a footprint of another subproblem";
     } else {
       distances_[a] = restrictedDistances(*this, a);
       if (distances_[a][starts_[a]] < 0) {
-        problem_ = label(a) + ": target " + poseText(r.target) + " is not reachable from start " + poseText(r.start);
+        problem_ = label(a) + ": target " + toString(r.target) + " is not reachable from start " + toString(r.start);
       }
     }
   }

@@ -14,12 +14,6 @@ namespace fleet_planner::test {
 
 namespace {
 
-std::string poseText(const GridPose& p) {
-  std::ostringstream out;
-  out << "(" << p.x << "," << p.y << "," << p.heading << ")";
-  return out.str();
-}
-
 }  // namespace
 
 Robot bar(const std::string& id, GridPose start, GridPose target) {
@@ -139,13 +133,13 @@ std::string staticFootprintClash(const World& world, const Subproblem& sub, cons
       const Path& path = o.plan.paths[k];
       for (std::size_t t = 0; t < path.size(); ++t) {
         if (footprintsOverlap(cells, path[t], blocker, s.pose))
-          return "robot '" + robot.id + "' at t=" + std::to_string(t) + " " + poseText(path[t]) +
-                 " overlaps the static footprint at " + poseText(s.pose);
+          return "robot '" + robot.id + "' at t=" + std::to_string(t) + " " + toString(path[t]) +
+                 " overlaps the static footprint at " + toString(s.pose);
         if (t + 1 == path.size()) break;
         const auto action = actionBetween(path[t], path[t + 1], ActionModel{});
         if (action && sweepsOverlap(cells, path[t], *action, blocker, s.pose, Action::Wait))
           return "robot '" + robot.id + "' in step " + std::to_string(t) + " from " +
-                 poseText(path[t]) + " sweeps into the static footprint at " + poseText(s.pose);
+                 toString(path[t]) + " sweeps into the static footprint at " + toString(s.pose);
       }
     }
   }

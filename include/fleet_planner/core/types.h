@@ -6,6 +6,7 @@
 /// state = cell * 4 + heading, so per-state data lives in flat arrays of size 4 * cells.
 #include <array>
 #include <cstdint>
+#include <string>
 
 namespace fleet_planner {
 
@@ -31,6 +32,11 @@ struct GridPose {
   }
   friend bool operator!=(const GridPose& a, const GridPose& b) { return !(a == b); }
 };
+
+/// "(x,y,heading)", for messages.
+inline std::string toString(const GridPose& p) {
+  return "(" + std::to_string(p.x) + "," + std::to_string(p.y) + "," + std::to_string(p.heading) + ")";
+}
 
 /// Unit step of each heading: 0 = +x, 1 = -x, 2 = +y, 3 = -y.
 constexpr std::array<Cell, kHeadings> kHeadingStep{{{1, 0}, {-1, 0}, {0, 1}, {0, -1}}};
