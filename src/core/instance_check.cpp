@@ -10,24 +10,29 @@
 
 namespace fleet_planner {
 
+std::string poseProblem(const GridMap& map, const FootprintCells& cells, const GridPose& pose) {
+  if (!validHeading(pose.heading)) return "has heading outside 0..3";
+  if (!map.inside(pose.x, pose.y)) {
+    return "is off the " + std::to_string(map.width()) + " x " + std::to_string(map.height()) + " map";
+  }
+  for (const Cell& c : cells.body(pose.heading).cells()) {
+    const int x = pose.x + c.x, y = pose.y + c.y;
+    if (!map.inside(x, y)) return "footprint leaves the map";
+    if (map.blocked(x, y)) {
+      return "footprint covers the blocked cell (" + std::to_string(x) + "," + std::to_string(y) + ")";
+    }
+  }
+  return {};
+}
+
 namespace {
 
 void checkPose(const GridMap& map, const Robot& robot, const FootprintCells& cells,
                const GridPose& pose, const char* what) {
+  const std::string problem = poseProblem(map, cells, pose);
+  if (problem.empty()) return;
   const std::string where = robotLabel(robot) + ": " + what + " " + toString(pose);
-  if (!validHeading(pose.heading)) throw InvalidInput(where + " has heading outside 0..3");
-  if (!map.inside(pose.x, pose.y)) {
-    throw InvalidInput(where + " is off the " + std::to_string(map.width()) + " x " +
-                       std::to_string(map.height()) + " map");
-  }
-  for (const Cell& c : cells.body(pose.heading).cells()) {
-    const int x = pose.x + c.x, y = pose.y + c.y;
-    if (!map.inside(x, y)) throw InvalidInput(where + ": footprint leaves the map");
-    if (map.blocked(x, y)) {
-      throw InvalidInput(where + ": footprint covers the blocked cell (" + std::to_string(x) + "," +
-                         std::to_string(y) + ")");
-    }
-  }
+  throw InvalidInput(where + (problem.rfind("footprint", 0) == 0 ? ": " : " ") + problem);
 }
 
 }  // namespace
@@ -67,11 +72,13 @@ SolvabilityReport checkSolvability(const Instance& instance, const FleetGraphs& 
     const StateGraph& g = graphs.graph(i);
     const StateId s = g.id(r.start), t = g.id(r.target);
     if (!g.valid(s)) {
-      report.problems.push_back({i, robotLabel(r) + ": start " + toString(r.start) + " is not a valid state"});
+      report.problems.push_back({i, -1, RobotProblem::Kind::InvalidStart,
+                                 robotLabel(r) + ": start " + toString(r.start) + " is not a valid state"});
     } else if (!g.valid(t)) {
-      report.problems.push_back({i, robotLabel(r) + ": target " + toString(r.target) + " is not a valid state"});
+      report.problems.push_back({i, -1, RobotProblem::Kind::InvalidTarget,
+                                 robotLabel(r) + ": target " + toString(r.target) + " is not a valid state"});
     } else if (!isReachable(g, s, t)) {
-      report.problems.push_back({i, robotLabel(r) + ": target " + toString(r.target) +
+      report.problems.push_back({i, -1, RobotProblem::Kind::Unreachable, robotLabel(r) + ": target " + toString(r.target) +
                                         " is not reachable from start " + toString(r.start) +
                                         " for its footprint"});
     }
@@ -80,10 +87,12 @@ SolvabilityReport checkSolvability(const Instance& instance, const FleetGraphs& 
     for (int j = i + 1; j < n; ++j) {
       const Robot &a = instance.robots[i], &b = instance.robots[j];
       if (footprintsOverlap(graphs.cells(i), a.start, graphs.cells(j), b.start)) {
-        report.problems.push_back({i, robotLabel(a) + ": start overlaps the start of " + robotLabel(b)});
+        report.problems.push_back({i, j, RobotProblem::Kind::StartsOverlap,
+                                   robotLabel(a) + ": start overlaps the start of " + robotLabel(b)});
       }
       if (footprintsOverlap(graphs.cells(i), a.target, graphs.cells(j), b.target)) {
-        report.problems.push_back({i, robotLabel(a) + ": target overlaps the target of " + robotLabel(b)});
+        report.problems.push_back({i, j, RobotProblem::Kind::TargetsOverlap,
+                                   robotLabel(a) + ": target overlaps the target of " + robotLabel(b)});
       }
     }
   }

@@ -5,10 +5,16 @@
 #include <vector>
 
 #include "fleet_planner/core/fleet_graphs.h"
+#include "fleet_planner/core/footprint_cells.h"
 #include "fleet_planner/core/grid_map.h"
 #include "fleet_planner/core/instance.h"
 
 namespace fleet_planner {
+
+/// Empty if a robot with these cells can stand at `pose`, otherwise why not: "has heading outside
+/// 0..3", "is off the W x H map", "footprint leaves the map", "footprint covers the blocked cell
+/// (x,y)".
+std::string poseProblem(const GridMap& map, const FootprintCells& cells, const GridPose& pose);
 
 /// Throws InvalidInput, naming the robot and where it came from, for input that cannot be
 /// planned at all: duplicate or empty ids, an unusable footprint, a footprint larger than the
@@ -17,7 +23,10 @@ namespace fleet_planner {
 void validateInstance(const GridMap& map, const Instance& instance);
 
 struct RobotProblem {
+  enum class Kind { InvalidStart, InvalidTarget, Unreachable, StartsOverlap, TargetsOverlap };
   int robot = -1;
+  int other = -1;  ///< the second robot of an overlap
+  Kind kind = Kind::Unreachable;
   std::string reason;  ///< starts with the robot's label
 };
 

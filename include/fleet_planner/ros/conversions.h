@@ -1,0 +1,57 @@
+#pragma once
+/// convert(): ROS messages to core types and back. The only place where metres and radians in the
+/// map frame meet cells and headings.
+///
+/// Grid frame: cell (x, y) has its lower corner at origin + resolution * (x, y), rotated by the
+/// map's yaw, and the robot's origin sits at the cell's centre. Heading 0 = +x of the grid,
+/// 1 = -x, 2 = +y, 3 = -y, i.e. yaw 0, pi, pi/2, -pi/2 relative to the map's yaw.
+#include <string>
+
+#include <fleet_planner/RobotFootprint.h>
+#include <geometry_msgs/Pose2D.h>
+#include <nav_msgs/OccupancyGrid.h>
+
+#include "fleet_planner/core/footprint.h"
+#include "fleet_planner/core/grid_map.h"
+#include "fleet_planner/core/types.h"
+
+namespace fleet_planner {
+
+/// How occupancy values become blocked cells.
+struct OccupancyPolicy {
+  int occupied_threshold = 65;  ///< values >= this (0..100) are blocked
+  bool unknown_is_free = false;  ///< -1 cells: free or blocked
+};
+
+/// The grid of an OccupancyGrid (row 0 at the origin, as in the message). Throws InvalidInput for
+/// a zero size, a size that does not match the data, or a non-positive/non-finite resolution.
+GridMap convert(const nav_msgs::OccupancyGrid& grid, const OccupancyPolicy& policy);
+
+/// A registry footprint (metres) in cells of `resolution` metres. Throws InvalidInput naming the
+/// robot for an unknown type or an unusable shape (see footprintProblem()).
+Footprint convert(const fleet_planner::RobotFootprint& footprint, double resolution);
+
+/// How far a pose may be from a cell centre and a grid heading.
+struct PoseTolerance {
+  double position = 0.1;  ///< metres from the nearest cell centre
+  double heading = 0.2;   ///< radians from the nearest grid heading
+};
+
+/// A map-frame pose snapped to the grid, or why it cannot be.
+struct GridPoseFit {
+  GridPose pose;
+  std::string error;  ///< empty on success, e.g. "x is NaN", "(31.0, 2.0) is off the map ..."
+  bool ok() const { return error.empty(); }
+};
+
+/// The grid state nearest to `pose`; an error if a value is not finite, the point is off the map,
+/// or it is farther than the tolerances from that state.
+GridPoseFit toGridPose(const GridMap& map, const geometry_msgs::Pose2D& pose, const PoseTolerance& tolerance);
+
+/// The map-frame pose of a grid state (the centre of its cell, its heading's yaw).
+geometry_msgs::Pose2D toPose2D(const GridMap& map, const GridPose& pose);
+
+/// Angle wrapped to (-pi, pi].
+double wrapAngle(double angle);
+
+}  // namespace fleet_planner

@@ -1,0 +1,94 @@
+#pragma once
+/// The PlanFleet service's logic, without a ROS master: request -> checks -> core instance ->
+/// Layered LA-MAPF -> response. The node owns one, feeds it the map and the footprint registry,
+/// and forwards the calls; gtest drives it directly.
+///
+/// Every outcome is a status in the response, never an exception: bad requests, unknown robots,
+/// poses off the map or in collision, timeouts and internal errors alike (rule: a service call
+/// always answers).
+#include <atomic>
+#include <cstdint>
+#include <functional>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <vector>
+
+#include <fleet_planner/FleetFootprints.h>
+#include <fleet_planner/PlanFleet.h>
+
+#include "fleet_planner/core/fleet_graphs.h"
+#include "fleet_planner/core/grid_map.h"
+#include "fleet_planner/ros/planner_config.h"
+
+namespace fleet_planner {
+
+/// A map as received, never modified after: a call keeps its snapshot while a new map arrives.
+struct MapSnapshot {
+  GridMap grid;
+  std::uint64_t version = 0;  ///< increases with every map message
+};
+
+/// A robot of a call as placed on the map: for markers and playback.
+struct RobotPlacement {
+  std::string robot_id;
+  fleet_planner::RobotFootprint footprint;  ///< metres
+  geometry_msgs::Pose2D start, goal;        ///< snapped to the grid
+  int subproblem = -1;
+};
+
+/// A call's response plus what the markers need.
+struct PlanCall {
+  fleet_planner::PlanFleet::Response response;
+  std::vector<RobotPlacement> placements;  ///< robots whose start and goal are valid
+  std::shared_ptr<const MapSnapshot> map;  ///< the map the call planned on (null: none)
+};
+
+/// Looks up a robot's current pose in the map frame (TF); false with a reason if it cannot.
+using StartLookup = std::function<bool(const std::string& robot_id, geometry_msgs::Pose2D& pose, std::string& error)>;
+
+class FleetPlanningService {
+ public:
+  explicit FleetPlanningService(PlannerConfig config) : config_(std::move(config)) {}
+
+  /// Thread-safe; a running call keeps the map it started with.
+  void setMap(const nav_msgs::OccupancyGrid& grid);
+  /// Thread-safe; replaces the whole registry.
+  void setFootprints(const fleet_planner::FleetFootprints& fleet);
+  bool hasMap() const;
+
+  /// Plans one request. Never throws. `lookup` serves tasks with start_from_tf; `cancel` (may be
+  /// null) stops the planning early (answered TIMEOUT, "cancelled").
+  PlanCall plan(const fleet_planner::PlanFleet::Request& request, const StartLookup& lookup,
+                const std::atomic<bool>* cancel = nullptr);
+
+  const PlannerConfig& config() const { return config_; }
+
+ private:
+  struct Graphs {
+    std::uint64_t map_version = 0;
+    std::vector<Footprint> footprints;
+    std::shared_ptr<const FleetGraphs> graphs;
+  };
+  /// The fleet's state graphs; reused when the map and the footprints are those of the last call.
+  std::shared_ptr<const FleetGraphs> graphsFor(const MapSnapshot& map, const std::vector<Footprint>& footprints,
+                                               bool& cached);
+  void planChecked(const fleet_planner::PlanFleet::Request& request, const StartLookup& lookup,
+                   const std::atomic<bool>* cancel, PlanCall& call);
+
+  const PlannerConfig config_;
+  mutable std::mutex mutex_;  ///< guards map_ and footprints_
+  std::shared_ptr<const MapSnapshot> map_;
+  std::uint64_t map_version_ = 0;
+  std::map<std::string, fleet_planner::RobotFootprint> footprints_;
+  std::mutex graphs_mutex_;
+  Graphs graphs_;
+};
+
+/// "SUCCESS", "TIMEOUT", ... for a PlanFleet response status ("STATUS_<n>" if unknown).
+std::string fleetStatusName(std::uint8_t status);
+/// "OK", "UNKNOWN_ROBOT", ... for a RobotResult status.
+std::string robotStatusName(std::uint8_t status);
+
+}  // namespace fleet_planner

@@ -1,0 +1,53 @@
+#pragma once
+/// The planner node's one typed configuration: defaults here, loaded from the parameter server in
+/// one place (loadPlannerConfig), checked by one function (checkPlannerConfig).
+/// config/planner.yaml documents every parameter.
+#include <string>
+#include <vector>
+
+#include <ros/node_handle.h>
+
+#include "fleet_planner/ros/conversions.h"
+
+namespace fleet_planner {
+
+struct PlannerConfig {
+  // Planning.
+  std::string backend = "la_lacam";  ///< default backend: "la_cbs", "la_lacam" or any plugin name
+  double time_limit = 10.0;          ///< default seconds per call, graphs included
+  bool decomposition = true;         ///< default: Layered LA-MAPF (false: raw)
+  int decomposition_steps = 4;       ///< default last decomposition step, 1..4
+  int threads = 2;                   ///< threads for state and relation graphs
+  std::string busy_policy = "reject";  ///< a call while another plans: "reject" (BUSY) or "queue"
+
+  // Map and poses.
+  int occupied_threshold = 65;   ///< occupancy values >= this are obstacles (1..100)
+  std::string unknown_policy = "obstacle";  ///< unknown cells (-1): "obstacle" or "free"
+  double position_tolerance = 0.1;  ///< metres a pose may be from its cell centre
+  double heading_tolerance = 0.2;   ///< radians a yaw may be from a grid heading
+
+  // Time and frames.
+  double seconds_per_step = 0.5;      ///< duration of one plan step (a move or a quarter turn)
+  std::string map_frame = "map";
+  std::string base_frame = "base_link";  ///< robot frames are <robot_id>/<base_frame>
+  double tf_timeout = 0.5;               ///< seconds to wait for a robot's transform
+
+  // Playback of the last plan as TF frames <robot_id>/<planned_frame>.
+  bool playback = true;
+  std::string planned_frame = "planned";
+  double playback_rate = 1.0;  ///< 2.0 plays twice as fast
+  bool playback_loop = true;   ///< start over after the makespan (with a pause)
+
+  OccupancyPolicy occupancyPolicy() const { return {occupied_threshold, unknown_policy == "free"}; }
+  PoseTolerance poseTolerance() const { return {position_tolerance, heading_tolerance}; }
+};
+
+/// Every problem with the configuration, one line each, naming the parameter ("time_limit must be
+/// > 0 (got -1)"); empty when it is usable.
+std::vector<std::string> checkPlannerConfig(const PlannerConfig& config);
+
+/// Reads the parameters of `nh` (the node's private handle) over the defaults. Throws InvalidInput
+/// naming the parameter for one of the wrong type; values are not range-checked here.
+PlannerConfig loadPlannerConfig(const ros::NodeHandle& nh);
+
+}  // namespace fleet_planner

@@ -1,0 +1,61 @@
+#pragma once
+/// fleet_planner_node: the ROS face of the planner. Subscribes to the map and the footprint
+/// registry, offers ~plan_fleet, publishes the last plan's timelines and markers (latched) and
+/// plays the plan back as TF frames <robot>/<planned_frame>.
+///
+/// Threads: callbacks run on an AsyncSpinner, so a map or registry update is taken while a call
+/// plans (the running call keeps its snapshot). One call plans at a time; a second one is
+/// answered BUSY (busy_policy: reject) or waits its turn (busy_policy: queue). No exception
+/// leaves a callback.
+#include <atomic>
+#include <memory>
+#include <mutex>
+
+#include <fleet_planner/FleetFootprints.h>
+#include <fleet_planner/FleetTimelines.h>
+#include <fleet_planner/PlanFleet.h>
+#include <nav_msgs/OccupancyGrid.h>
+#include <ros/ros.h>
+#include <tf2_ros/buffer.h>
+#include <tf2_ros/transform_broadcaster.h>
+#include <tf2_ros/transform_listener.h>
+
+#include "fleet_planner/ros/backend_loader.h"
+#include "fleet_planner/ros/fleet_planning_service.h"
+
+namespace fleet_planner {
+
+class PlannerNode {
+ public:
+  /// `nh` for topics, `private_nh` for the service and the latched outputs. The config must have
+  /// passed checkPlannerConfig(); `plugins` must outlive the node.
+  PlannerNode(ros::NodeHandle nh, ros::NodeHandle private_nh, PlannerConfig config);
+  ~PlannerNode();
+
+ private:
+  void onMap(const nav_msgs::OccupancyGrid::ConstPtr& msg);
+  void onFootprints(const fleet_planner::FleetFootprints::ConstPtr& msg);
+  bool onPlanFleet(fleet_planner::PlanFleet::Request& request, fleet_planner::PlanFleet::Response& response);
+  bool lookupStart(const std::string& robot_id, geometry_msgs::Pose2D& pose, std::string& error);
+  void publish(const PlanCall& call);
+  void onPlaybackTimer(const ros::TimerEvent& event);
+
+  ros::NodeHandle nh_, private_nh_;
+  FleetPlanningService service_;
+  std::atomic<bool> shutting_down_{false};
+  std::mutex plan_mutex_;  ///< held while a call plans
+
+  tf2_ros::Buffer tf_buffer_;
+  tf2_ros::TransformListener tf_listener_;
+  tf2_ros::TransformBroadcaster tf_broadcaster_;
+  ros::Subscriber map_sub_, fleet_sub_;
+  ros::ServiceServer plan_server_;
+  ros::Publisher timelines_pub_, markers_pub_;
+  ros::Timer playback_timer_;
+
+  std::mutex playback_mutex_;  ///< guards the two below
+  std::vector<fleet_planner::RobotTimeline> playing_;
+  ros::Time playback_start_;
+};
+
+}  // namespace fleet_planner

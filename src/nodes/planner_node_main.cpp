@@ -1,0 +1,39 @@
+// fleet_planner_node: loads and checks the configuration, loads the backend plugins, and serves
+// PlanFleet until shutdown. A bad configuration stops it at startup with every problem named.
+#include <ros/ros.h>
+
+#include "fleet_planner/ros/backend_loader.h"
+#include "fleet_planner/ros/planner_config.h"
+#include "fleet_planner/ros/planner_node.h"
+
+int main(int argc, char** argv) {
+  ros::init(argc, argv, "fleet_planner");
+  ros::NodeHandle nh, private_nh("~");
+  try {
+    const fleet_planner::PlannerConfig config = fleet_planner::loadPlannerConfig(private_nh);
+    const auto problems = fleet_planner::checkPlannerConfig(config);
+    for (const auto& p : problems) ROS_FATAL("fleet_planner: parameter %s", p.c_str());
+    if (!problems.empty()) return 1;
+
+    fleet_planner::BackendPlugins plugins;
+    for (const auto& p : plugins.load()) ROS_WARN("fleet_planner: %s", p.c_str());
+    std::string why_not;
+    const std::string backend = fleet_planner::resolveBackendName(config.backend, &why_not);
+    if (backend.empty()) {
+      ROS_FATAL("fleet_planner: parameter %s: %s", private_nh.resolveName("backend").c_str(), why_not.c_str());
+      return 1;
+    }
+    std::string names;
+    for (const auto& n : plugins.declared()) names += " " + n;
+    ROS_INFO("fleet_planner: backend plugins:%s; default backend %s", names.c_str(), backend.c_str());
+
+    fleet_planner::PlannerNode node(nh, private_nh, config);
+    ros::AsyncSpinner spinner(3);  // a planning call must not block map, registry and playback
+    spinner.start();
+    ros::waitForShutdown();
+  } catch (const std::exception& e) {
+    ROS_FATAL("fleet_planner: %s", e.what());
+    return 1;
+  }
+  return 0;
+}

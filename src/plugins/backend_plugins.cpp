@@ -1,0 +1,9 @@
+// Exports the core's backends to pluginlib, so fleet_planner_node finds them by name the way it
+// finds any other package's backend (the nav_core convention). See backends.xml.
+#include <pluginlib/class_list_macros.hpp>
+
+#include "fleet_planner/solvers/la_cbs.h"
+#include "fleet_planner/solvers/la_lacam.h"
+
+PLUGINLIB_EXPORT_CLASS(fleet_planner::LaCbs, fleet_planner::Solver)
+PLUGINLIB_EXPORT_CLASS(fleet_planner::LaLacam, fleet_planner::Solver)

@@ -1,0 +1,385 @@
+#include "fleet_planner/ros/fleet_planning_service.h"
+
+#include <chrono>
+#include <cmath>
+#include <set>
+
+#include "fleet_planner/core/errors.h"
+#include "fleet_planner/core/footprint_cells.h"
+#include "fleet_planner/core/instance_check.h"
+#include "fleet_planner/layered_planner.h"
+#include "fleet_planner/ros/backend_loader.h"
+#include "fleet_planner/ros/conversions.h"
+
+namespace fleet_planner {
+
+namespace {
+
+using Request = fleet_planner::PlanFleet::Request;
+using Response = fleet_planner::PlanFleet::Response;
+using RobotResultMsg = fleet_planner::RobotResult;
+using Clock = std::chrono::steady_clock;
+
+double since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+
+std::string quoted(const std::string& id) { return "robot '" + id + "'"; }
+
+std::string poseText(const geometry_msgs::Pose2D& p) {
+  char buf[96];
+  std::snprintf(buf, sizeof(buf), "(%.3f, %.3f, %.3f)", p.x, p.y, p.theta);
+  return buf;
+}
+
+/// One task after its checks.
+struct TaskState {
+  Footprint footprint;  // cells
+  GridPose start, goal;
+  RobotPlacement placement;
+};
+
+/// Fleet status for the first robot error of each kind, most fundamental first.
+std::uint8_t fleetStatusFor(std::uint8_t robot_status) {
+  switch (robot_status) {
+    case RobotResultMsg::UNKNOWN_ROBOT: return Response::UNKNOWN_ROBOT;
+    case RobotResultMsg::INVALID_FOOTPRINT: return Response::INVALID_REQUEST;
+    case RobotResultMsg::NO_TRANSFORM: return Response::NO_TRANSFORM;
+    case RobotResultMsg::INVALID_START: return Response::INVALID_START;
+    case RobotResultMsg::INVALID_GOAL: return Response::INVALID_GOAL;
+    case RobotResultMsg::UNREACHABLE: return Response::INFEASIBLE;
+    default: return Response::INVALID_REQUEST;
+  }
+}
+
+void fail(PlanCall& call, std::uint8_t status, const std::string& message) {
+  call.response.status = status;
+  call.response.message = message;
+}
+
+/// Marks every robot without an error NOT_PLANNED and sets the fleet status from the robot errors
+/// (returns false if there were none).
+bool failOnRobotErrors(PlanCall& call) {
+  auto& robots = call.response.robots;
+  const std::uint8_t order[] = {RobotResultMsg::UNKNOWN_ROBOT, RobotResultMsg::INVALID_FOOTPRINT,
+                                RobotResultMsg::NO_TRANSFORM,  RobotResultMsg::INVALID_START,
+                                RobotResultMsg::INVALID_GOAL,  RobotResultMsg::CONFLICT,
+                                RobotResultMsg::UNREACHABLE};
+  int errors = 0;
+  const RobotResultMsg* first = nullptr;
+  for (std::uint8_t kind : order) {
+    for (const auto& r : robots) {
+      if (r.status != kind) continue;
+      ++errors;
+      if (first == nullptr) first = &r;
+    }
+  }
+  if (errors == 0) return false;
+  std::uint8_t status = fleetStatusFor(first->status);
+  if (first->status == RobotResultMsg::CONFLICT) {
+    status = first->message.find("start overlaps") != std::string::npos ? Response::INVALID_START
+                                                                         : Response::INVALID_GOAL;
+  }
+  std::string message = first->message;
+  if (errors > 1) message += " (and " + std::to_string(errors - 1) + " more robot errors, see robots)";
+  fail(call, status, message);
+  for (auto& r : robots) {
+    if (r.status == RobotResultMsg::OK) {
+      r.status = RobotResultMsg::NOT_PLANNED;
+      r.message = "not planned: " + fleetStatusName(status);
+    }
+  }
+  return true;
+}
+
+std::uint8_t responseStatus(SolveStatus status) {
+  switch (status) {
+    case SolveStatus::Success: return Response::SUCCESS;
+    case SolveStatus::Timeout:
+    case SolveStatus::Cancelled: return Response::TIMEOUT;
+    case SolveStatus::Infeasible: return Response::INFEASIBLE;
+    case SolveStatus::InvalidInput: return Response::INVALID_REQUEST;
+  }
+  return Response::INTERNAL_ERROR;
+}
+
+}  // namespace
+
+void FleetPlanningService::setMap(const nav_msgs::OccupancyGrid& grid) {
+  auto snapshot = std::make_shared<MapSnapshot>();
+  snapshot->grid = convert(grid, config_.occupancyPolicy());  // throws InvalidInput: keep the old map
+  std::lock_guard<std::mutex> lock(mutex_);
+  snapshot->version = ++map_version_;
+  map_ = std::move(snapshot);
+}
+
+void FleetPlanningService::setFootprints(const fleet_planner::FleetFootprints& fleet) {
+  std::map<std::string, fleet_planner::RobotFootprint> footprints;
+  for (const auto& f : fleet.robots) footprints[f.robot_id] = f;
+  std::lock_guard<std::mutex> lock(mutex_);
+  footprints_ = std::move(footprints);
+}
+
+bool FleetPlanningService::hasMap() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return map_ != nullptr;
+}
+
+std::shared_ptr<const FleetGraphs> FleetPlanningService::graphsFor(const MapSnapshot& map,
+                                                                   const std::vector<Footprint>& footprints,
+                                                                   bool& cached) {
+  std::lock_guard<std::mutex> lock(graphs_mutex_);
+  cached = graphs_.graphs && graphs_.map_version == map.version && graphs_.footprints == footprints;
+  if (!cached) {
+    graphs_.graphs.reset();  // free the old graphs before building new ones
+    graphs_.graphs = std::make_shared<const FleetGraphs>(map.grid, footprints, ActionModel{}, config_.threads);
+    graphs_.map_version = map.version;
+    graphs_.footprints = footprints;
+  }
+  return graphs_.graphs;
+}
+
+PlanCall FleetPlanningService::plan(const Request& request, const StartLookup& lookup,
+                                    const std::atomic<bool>* cancel) {
+  PlanCall call;
+  call.response.statistics.soc = -1;
+  call.response.statistics.makespan = -1;
+  const auto t0 = Clock::now();
+  try {
+    planChecked(request, lookup, cancel, call);
+  } catch (const InputError& e) {
+    fail(call, Response::INVALID_REQUEST, e.what());
+  } catch (const std::exception& e) {
+    fail(call, Response::INTERNAL_ERROR, std::string("internal error: ") + e.what());
+  } catch (...) {
+    fail(call, Response::INTERNAL_ERROR, "internal error: unknown exception");
+  }
+  if (call.response.status != Response::SUCCESS) call.response.timelines.clear();
+  call.response.statistics.total_time = since(t0);
+  return call;
+}
+
+void FleetPlanningService::planChecked(const Request& request, const StartLookup& lookup,
+                                       const std::atomic<bool>* cancel, PlanCall& call) {
+  const auto t0 = Clock::now();
+  Response& res = call.response;
+  const int n = static_cast<int>(request.tasks.size());
+  res.statistics.robots = n;
+
+  // The request's own fields.
+  if (n == 0) return fail(call, Response::INVALID_REQUEST, "tasks is empty: give one task per robot");
+  std::map<std::string, int> task_of;
+  for (int i = 0; i < n; ++i) {
+    const std::string& id = request.tasks[i].robot_id;
+    if (id.empty()) return fail(call, Response::INVALID_REQUEST, "tasks[" + std::to_string(i) + "]: robot_id is empty");
+    const auto [it, fresh] = task_of.emplace(id, i);
+    if (!fresh) {
+      return fail(call, Response::INVALID_REQUEST, quoted(id) + " has two tasks (tasks[" + std::to_string(it->second) +
+                                                       "] and tasks[" + std::to_string(i) + "])");
+    }
+  }
+  double time_limit = request.time_limit;
+  if (time_limit == -1.0) {
+    time_limit = config_.time_limit;
+  } else if (!(time_limit > 0) || !std::isfinite(time_limit)) {
+    return fail(call, Response::INVALID_REQUEST,
+                "time_limit must be > 0 seconds, or -1 for the planner's default (" +
+                    std::to_string(config_.time_limit) + " s); got " + std::to_string(request.time_limit));
+  }
+  if (request.decomposition > Request::DECOMPOSITION_RAW) {
+    return fail(call, Response::INVALID_REQUEST,
+                "decomposition must be DECOMPOSITION_DEFAULT (0), _LAYERED (1) or _RAW (2); got " +
+                    std::to_string(request.decomposition));
+  }
+  if (request.steps > 4) {
+    return fail(call, Response::INVALID_REQUEST,
+                "steps must be 1..4, or 0 for the planner's default; got " + std::to_string(request.steps));
+  }
+  const std::string wanted = request.backend.empty() ? config_.backend : request.backend;
+  std::string why_not;
+  const std::string backend = resolveBackendName(wanted, &why_not);
+  if (backend.empty()) return fail(call, Response::UNKNOWN_BACKEND, why_not);
+
+  std::shared_ptr<const MapSnapshot> map;
+  std::map<std::string, fleet_planner::RobotFootprint> registry;
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    map = map_;
+    registry = footprints_;
+  }
+  if (!map) return fail(call, Response::NO_MAP, "no map received yet (topic 'map', nav_msgs/OccupancyGrid)");
+  call.map = map;
+  const GridMap& grid = map->grid;
+
+  // Each robot: footprint, start, goal.
+  std::vector<TaskState> tasks(n);
+  res.robots.resize(n);
+  for (int i = 0; i < n; ++i) {
+    const auto& task = request.tasks[i];
+    auto& result = res.robots[i];
+    result.robot_id = task.robot_id;
+    result.status = RobotResultMsg::OK;
+    const std::string who = quoted(task.robot_id);
+    auto robotError = [&](std::uint8_t status, const std::string& message) {
+      result.status = status;
+      result.message = who + ": " + message;
+    };
+    const auto found = registry.find(task.robot_id);
+    if (found == registry.end()) {
+      std::string known;
+      for (const auto& [id, f] : registry) known += (known.empty() ? "" : ", ") + id;
+      robotError(RobotResultMsg::UNKNOWN_ROBOT, "not in the footprint registry (known: " +
+                                                    (known.empty() ? std::string("none") : known) + ")");
+      continue;
+    }
+    std::unique_ptr<FootprintCells> cells;
+    try {
+      tasks[i].footprint = convert(found->second, grid.resolution());
+      cells = std::make_unique<FootprintCells>(tasks[i].footprint);
+    } catch (const InputError& e) {
+      result.status = RobotResultMsg::INVALID_FOOTPRINT;
+      result.message = e.what();
+      continue;
+    }
+    geometry_msgs::Pose2D start = task.start;
+    if (task.start_from_tf) {
+      std::string error;
+      if (!lookup || !lookup(task.robot_id, start, error)) {
+        robotError(RobotResultMsg::NO_TRANSFORM, "start from TF: " + (lookup ? error : "no TF lookup available"));
+        continue;
+      }
+    }
+    auto place = [&](const geometry_msgs::Pose2D& pose, const char* what, std::uint8_t status, GridPose& out) {
+      const GridPoseFit fit = toGridPose(grid, pose, config_.poseTolerance());
+      if (!fit.ok()) {
+        robotError(status, std::string(what) + " " + fit.error);
+        return false;
+      }
+      const std::string problem = poseProblem(grid, *cells, fit.pose);
+      if (!problem.empty()) {
+        robotError(status, std::string(what) + " " + poseText(pose) + " = grid state " + toString(fit.pose) + ": " +
+                               problem);
+        return false;
+      }
+      out = fit.pose;
+      return true;
+    };
+    if (!place(start, "start", RobotResultMsg::INVALID_START, tasks[i].start)) continue;
+    if (!place(task.goal, "goal", RobotResultMsg::INVALID_GOAL, tasks[i].goal)) continue;
+    tasks[i].placement = {task.robot_id, found->second, toPose2D(grid, tasks[i].start), toPose2D(grid, tasks[i].goal), -1};
+  }
+  for (int i = 0; i < n; ++i) {
+    if (res.robots[i].status == RobotResultMsg::OK) call.placements.push_back(tasks[i].placement);
+  }
+  if (failOnRobotErrors(call)) return;
+
+  // The core instance and its graphs; the pre-check names unreachable goals and overlaps.
+  Instance instance;
+  std::vector<Footprint> footprints;
+  for (int i = 0; i < n; ++i) {
+    instance.robots.push_back({request.tasks[i].robot_id, tasks[i].footprint, tasks[i].start, tasks[i].goal,
+                               "tasks[" + std::to_string(i) + "]"});
+    footprints.push_back(tasks[i].footprint);
+  }
+  const auto t_graphs = Clock::now();
+  bool cached = false;
+  const auto graphs = graphsFor(*map, footprints, cached);
+  res.statistics.precompute_time = cached ? 0.0 : since(t_graphs);
+  const SolvabilityReport report = checkSolvability(instance, *graphs);
+  for (const RobotProblem& p : report.problems) {
+    auto& result = res.robots[p.robot];
+    if (result.status != RobotResultMsg::OK) continue;
+    result.status = p.kind == RobotProblem::Kind::Unreachable ? RobotResultMsg::UNREACHABLE
+                    : p.kind == RobotProblem::Kind::InvalidStart ? RobotResultMsg::INVALID_START
+                    : p.kind == RobotProblem::Kind::InvalidTarget ? RobotResultMsg::INVALID_GOAL
+                                                                  : RobotResultMsg::CONFLICT;
+    result.message = p.reason;
+  }
+  if (failOnRobotErrors(call)) return;
+
+  // Plan.
+  LayeredOptions options;
+  options.backend = backend;
+  options.decompose = request.decomposition == Request::DECOMPOSITION_DEFAULT ? config_.decomposition
+                      : request.decomposition == Request::DECOMPOSITION_LAYERED;
+  options.last_step = request.steps == 0 ? config_.decomposition_steps : request.steps;
+  options.threads = config_.threads;
+  options.seed = request.seed;
+  const Deadline deadline = Deadline::in(time_limit - since(t0), cancel);
+  const LayeredResult result = planLayered(grid, instance, *graphs, options, deadline);
+
+  res.statistics.decomposition_time = result.decompose_s;
+  res.statistics.solve_time = result.solve_s;
+  int largest = 0;
+  for (int s = 0; s < static_cast<int>(result.subproblems.size()); ++s) {
+    const SolvedSubproblem& sub = result.subproblems[s];
+    fleet_planner::SubproblemInfo info;
+    info.index = s;
+    info.cluster = sub.cluster;
+    info.level = sub.level;
+    for (int r : sub.robots) {
+      info.robot_ids.push_back(instance.robots[r].id);
+      for (auto& placement : call.placements) {
+        if (placement.robot_id == instance.robots[r].id) placement.subproblem = s;
+      }
+    }
+    info.status = statusName(sub.status);
+    info.solve_time = sub.time_s;
+    info.delay = sub.delay;
+    largest = std::max(largest, static_cast<int>(sub.robots.size()));
+    res.subproblems.push_back(std::move(info));
+  }
+  res.statistics.subproblems = static_cast<std::uint32_t>(result.subproblems.size());
+  res.statistics.largest_subproblem = largest;
+
+  if (!result.success()) {
+    std::string message = std::string(statusName(result.status)) + ": " + result.reason;
+    if (deadline.cancelled()) message = "cancelled (the node is shutting down): " + result.reason;
+    for (const std::string& merge : result.merges) message += "; " + merge;
+    fail(call, responseStatus(result.status), message);
+    for (auto& r : res.robots) r.status = RobotResultMsg::NOT_PLANNED, r.message = "not planned: " + message;
+    return;
+  }
+
+  const double dt = config_.seconds_per_step;
+  for (int i = 0; i < n; ++i) {
+    fleet_planner::RobotTimeline timeline;
+    timeline.robot_id = instance.robots[i].id;
+    const Path& path = result.plan.paths[i];
+    timeline.cost = std::max(0, pathCost(path, instance.robots[i].target));
+    for (int t = 0; t < static_cast<int>(path.size()); ++t) {
+      fleet_planner::TimedState state;
+      state.step = t;
+      state.time = t * dt;
+      const auto pose = toPose2D(grid, path[t]);
+      state.x = pose.x, state.y = pose.y, state.yaw = pose.theta;
+      state.cell_x = path[t].x, state.cell_y = path[t].y, state.heading = path[t].heading;
+      timeline.states.push_back(state);
+    }
+    for (const auto& placement : call.placements) {
+      if (placement.robot_id == timeline.robot_id) timeline.subproblem = placement.subproblem;
+    }
+    res.timelines.push_back(std::move(timeline));
+    res.robots[i].message = "planned: cost " + std::to_string(res.timelines.back().cost) + " steps";
+  }
+  res.statistics.soc = result.metrics.soc;
+  res.statistics.makespan = result.metrics.makespan;
+  res.status = Response::SUCCESS;
+  res.message = "planned " + std::to_string(n) + " robots with " + backend + (options.decompose ? " (layered, " : " (raw, ") +
+                std::to_string(result.subproblems.size()) + " subproblems): SOC " + std::to_string(result.metrics.soc) +
+                ", makespan " + std::to_string(result.metrics.makespan) + " steps";
+}
+
+std::string fleetStatusName(std::uint8_t status) {
+  static const char* const kNames[] = {"SUCCESS",         "TIMEOUT",       "INFEASIBLE",    "INVALID_REQUEST",
+                                       "NO_MAP",          "UNKNOWN_ROBOT", "UNKNOWN_BACKEND", "INVALID_START",
+                                       "INVALID_GOAL",    "NO_TRANSFORM",  "BUSY",          "INTERNAL_ERROR"};
+  return status < std::size(kNames) ? kNames[status] : "STATUS_" + std::to_string(status);
+}
+
+std::string robotStatusName(std::uint8_t status) {
+  static const char* const kNames[] = {"OK",           "UNKNOWN_ROBOT", "INVALID_START", "INVALID_GOAL",
+                                       "NO_TRANSFORM", "UNREACHABLE",   "CONFLICT",      "NOT_PLANNED",
+                                       "INVALID_FOOTPRINT"};
+  return status < std::size(kNames) ? kNames[status] : "STATUS_" + std::to_string(status);
+}
+
+}  // namespace fleet_planner

@@ -1,0 +1,70 @@
+#include "fleet_planner/ros/planner_config.h"
+
+#include <cmath>
+#include <sstream>
+
+namespace fleet_planner {
+
+namespace {
+
+template <typename T>
+std::string show(const T& v) {
+  std::ostringstream out;
+  out << v;
+  return out.str();
+}
+
+class Checker {
+ public:
+  void positive(const char* name, double v) {
+    if (!(v > 0) || !std::isfinite(v)) add(name, "must be > 0 and finite", v);
+  }
+  void nonNegative(const char* name, double v) {
+    if (!(v >= 0) || !std::isfinite(v)) add(name, "must be >= 0 and finite", v);
+  }
+  void range(const char* name, int v, int lo, int hi) {
+    if (v < lo || v > hi) add(name, "must be in " + show(lo) + ".." + show(hi), v);
+  }
+  void oneOf(const char* name, const std::string& v, const std::vector<std::string>& allowed) {
+    for (const auto& a : allowed) {
+      if (v == a) return;
+    }
+    std::string list;
+    for (const auto& a : allowed) list += (list.empty() ? "" : " or ") + ("'" + a + "'");
+    add(name, "must be " + list, "'" + v + "'");
+  }
+  void nonEmpty(const char* name, const std::string& v) {
+    if (v.empty()) errors.push_back(std::string(name) + " must not be empty");
+  }
+  std::vector<std::string> errors;
+
+ private:
+  template <typename T>
+  void add(const char* name, const std::string& rule, const T& got) {
+    errors.push_back(std::string(name) + " " + rule + " (got " + show(got) + ")");
+  }
+};
+
+}  // namespace
+
+std::vector<std::string> checkPlannerConfig(const PlannerConfig& c) {
+  Checker check;
+  check.nonEmpty("backend", c.backend);
+  check.positive("time_limit", c.time_limit);
+  check.range("decomposition_steps", c.decomposition_steps, 1, 4);
+  check.range("threads", c.threads, 1, 64);
+  check.oneOf("busy_policy", c.busy_policy, {"reject", "queue"});
+  check.range("occupied_threshold", c.occupied_threshold, 1, 100);
+  check.oneOf("unknown_policy", c.unknown_policy, {"obstacle", "free"});
+  check.nonNegative("position_tolerance", c.position_tolerance);
+  check.nonNegative("heading_tolerance", c.heading_tolerance);
+  check.positive("seconds_per_step", c.seconds_per_step);
+  check.nonEmpty("map_frame", c.map_frame);
+  check.nonEmpty("base_frame", c.base_frame);
+  check.nonNegative("tf_timeout", c.tf_timeout);
+  check.nonEmpty("planned_frame", c.planned_frame);
+  check.positive("playback_rate", c.playback_rate);
+  return check.errors;
+}
+
+}  // namespace fleet_planner

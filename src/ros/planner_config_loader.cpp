@@ -1,0 +1,76 @@
+// loadPlannerConfig: the parameter server -> PlannerConfig, with type checks that name the
+// parameter (ros::NodeHandle::param would silently keep the default for a mistyped value).
+#include <xmlrpcpp/XmlRpcValue.h>
+
+#include "fleet_planner/core/errors.h"
+#include "fleet_planner/ros/planner_config.h"
+
+namespace fleet_planner {
+
+namespace {
+
+class Reader {
+ public:
+  explicit Reader(const ros::NodeHandle& nh) : nh_(nh) {}
+
+  void read(const char* name, double& out) {
+    XmlRpc::XmlRpcValue v;
+    if (!get(name, v)) return;
+    if (v.getType() == XmlRpc::XmlRpcValue::TypeDouble) out = static_cast<double>(v);
+    else if (v.getType() == XmlRpc::XmlRpcValue::TypeInt) out = static_cast<int>(v);
+    else wrongType(name, "a number", v);
+  }
+  void read(const char* name, int& out) {
+    XmlRpc::XmlRpcValue v;
+    if (!get(name, v)) return;
+    if (v.getType() != XmlRpc::XmlRpcValue::TypeInt) wrongType(name, "an integer", v);
+    out = static_cast<int>(v);
+  }
+  void read(const char* name, bool& out) {
+    XmlRpc::XmlRpcValue v;
+    if (!get(name, v)) return;
+    if (v.getType() != XmlRpc::XmlRpcValue::TypeBoolean) wrongType(name, "true or false", v);
+    out = static_cast<bool>(v);
+  }
+  void read(const char* name, std::string& out) {
+    XmlRpc::XmlRpcValue v;
+    if (!get(name, v)) return;
+    if (v.getType() != XmlRpc::XmlRpcValue::TypeString) wrongType(name, "a string", v);
+    out = static_cast<std::string>(v);
+  }
+
+ private:
+  bool get(const char* name, XmlRpc::XmlRpcValue& v) const { return nh_.getParam(name, v); }
+  [[noreturn]] void wrongType(const char* name, const char* expected, XmlRpc::XmlRpcValue& v) const {
+    throw InvalidInput("parameter " + nh_.resolveName(name) + " must be " + expected + " (got " + v.toXml() + ")");
+  }
+  const ros::NodeHandle& nh_;
+};
+
+}  // namespace
+
+PlannerConfig loadPlannerConfig(const ros::NodeHandle& nh) {
+  PlannerConfig c;
+  Reader r(nh);
+  r.read("backend", c.backend);
+  r.read("time_limit", c.time_limit);
+  r.read("decomposition", c.decomposition);
+  r.read("decomposition_steps", c.decomposition_steps);
+  r.read("threads", c.threads);
+  r.read("busy_policy", c.busy_policy);
+  r.read("occupied_threshold", c.occupied_threshold);
+  r.read("unknown_policy", c.unknown_policy);
+  r.read("position_tolerance", c.position_tolerance);
+  r.read("heading_tolerance", c.heading_tolerance);
+  r.read("seconds_per_step", c.seconds_per_step);
+  r.read("map_frame", c.map_frame);
+  r.read("base_frame", c.base_frame);
+  r.read("tf_timeout", c.tf_timeout);
+  r.read("playback", c.playback);
+  r.read("planned_frame", c.planned_frame);
+  r.read("playback_rate", c.playback_rate);
+  r.read("playback_loop", c.playback_loop);
+  return c;
+}
+
+}  // namespace fleet_planner

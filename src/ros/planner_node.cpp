@@ -1,0 +1,149 @@
+#include "fleet_planner/ros/planner_node.h"
+
+#include <tf2/LinearMath/Quaternion.h>
+#include <tf2/utils.h>
+#include <visualization_msgs/MarkerArray.h>
+
+#include "fleet_planner/ros/marker_builder.h"
+#include "fleet_planner/ros/plan_playback.h"
+
+namespace fleet_planner {
+
+namespace {
+
+constexpr double kPlaybackHz = 20.0;
+constexpr double kLoopPause = 2.0;  // seconds at the end before playing again
+
+}  // namespace
+
+PlannerNode::PlannerNode(ros::NodeHandle nh, ros::NodeHandle private_nh, PlannerConfig config)
+    : nh_(nh), private_nh_(private_nh), service_(std::move(config)), tf_listener_(tf_buffer_) {
+  timelines_pub_ = private_nh_.advertise<fleet_planner::FleetTimelines>("timelines", 1, true);
+  markers_pub_ = private_nh_.advertise<visualization_msgs::MarkerArray>("markers", 1, true);
+  map_sub_ = nh_.subscribe("map", 1, &PlannerNode::onMap, this);
+  fleet_sub_ = nh_.subscribe("fleet_footprints", 1, &PlannerNode::onFootprints, this);
+  plan_server_ = private_nh_.advertiseService("plan_fleet", &PlannerNode::onPlanFleet, this);
+  if (service_.config().playback) {
+    playback_timer_ = nh_.createTimer(ros::Duration(1.0 / kPlaybackHz), &PlannerNode::onPlaybackTimer, this);
+  }
+}
+
+PlannerNode::~PlannerNode() { shutting_down_ = true; }
+
+void PlannerNode::onMap(const nav_msgs::OccupancyGrid::ConstPtr& msg) {
+  try {
+    service_.setMap(*msg);
+    ROS_INFO("fleet_planner: map %u x %u cells of %.3f m", msg->info.width, msg->info.height, msg->info.resolution);
+  } catch (const std::exception& e) {
+    ROS_ERROR("fleet_planner: map rejected, keeping the previous one: %s", e.what());
+  }
+}
+
+void PlannerNode::onFootprints(const fleet_planner::FleetFootprints::ConstPtr& msg) {
+  try {
+    service_.setFootprints(*msg);
+    ROS_INFO("fleet_planner: footprint registry with %zu robots", msg->robots.size());
+  } catch (const std::exception& e) {
+    ROS_ERROR("fleet_planner: footprint registry rejected: %s", e.what());
+  }
+}
+
+bool PlannerNode::lookupStart(const std::string& robot_id, geometry_msgs::Pose2D& pose, std::string& error) {
+  const auto& c = service_.config();
+  const std::string frame = robot_id + "/" + c.base_frame;
+  try {
+    const auto t = tf_buffer_.lookupTransform(c.map_frame, frame, ros::Time(0), ros::Duration(c.tf_timeout));
+    pose.x = t.transform.translation.x;
+    pose.y = t.transform.translation.y;
+    pose.theta = tf2::getYaw(t.transform.rotation);
+    return true;
+  } catch (const std::exception& e) {
+    error = "no transform " + c.map_frame + " -> " + frame + ": " + e.what();
+    return false;
+  }
+}
+
+bool PlannerNode::onPlanFleet(fleet_planner::PlanFleet::Request& request, fleet_planner::PlanFleet::Response& response) {
+  try {
+    std::unique_lock<std::mutex> lock(plan_mutex_, std::defer_lock);
+    if (service_.config().busy_policy == "queue") {
+      lock.lock();
+    } else if (!lock.try_lock()) {
+      response.status = fleet_planner::PlanFleet::Response::BUSY;
+      response.message = "another PlanFleet call is planning (busy_policy: reject); call again later";
+      return true;
+    }
+    const PlanCall call = service_.plan(
+        request, [this](const std::string& id, geometry_msgs::Pose2D& p, std::string& e) { return lookupStart(id, p, e); },
+        &shutting_down_);
+    response = call.response;
+    const auto& r = call.response;
+    ROS_INFO("fleet_planner: %zu robots: %s: %s (%.2f s)", request.tasks.size(), fleetStatusName(r.status).c_str(),
+             r.message.c_str(), r.statistics.total_time);
+    publish(call);
+  } catch (const std::exception& e) {
+    response.status = fleet_planner::PlanFleet::Response::INTERNAL_ERROR;
+    response.message = std::string("internal error: ") + e.what();
+    ROS_ERROR("fleet_planner: %s", response.message.c_str());
+  }
+  return true;  // the answer is in the response, whatever happened
+}
+
+void PlannerNode::publish(const PlanCall& call) {
+  const auto& c = service_.config();
+  const auto& r = call.response;
+  MarkerStyle style;
+  style.map_frame = c.map_frame;
+  if (c.playback && r.status == fleet_planner::PlanFleet::Response::SUCCESS) style.planned_frame_suffix = c.planned_frame;
+  auto markers = buildPlanMarkers(call.placements, r.timelines, r.subproblems, style);
+  const ros::Time now = ros::Time::now();
+  for (auto& m : markers.markers) m.header.stamp = now;
+  markers_pub_.publish(markers);
+  if (r.status != fleet_planner::PlanFleet::Response::SUCCESS) return;
+
+  fleet_planner::FleetTimelines timelines;
+  timelines.header.frame_id = c.map_frame;
+  timelines.header.stamp = now;
+  timelines.seconds_per_step = c.seconds_per_step;
+  timelines.timelines = r.timelines;
+  timelines_pub_.publish(timelines);
+  std::lock_guard<std::mutex> lock(playback_mutex_);
+  playing_ = r.timelines;
+  playback_start_ = now;
+}
+
+void PlannerNode::onPlaybackTimer(const ros::TimerEvent&) {
+  try {
+    const auto& c = service_.config();
+    std::lock_guard<std::mutex> lock(playback_mutex_);
+    if (playing_.empty()) return;
+    const ros::Time now = ros::Time::now();
+    double t = (now - playback_start_).toSec() * c.playback_rate;
+    const double duration = planDuration(playing_);
+    if (c.playback_loop && t > duration + kLoopPause * c.playback_rate) {
+      playback_start_ = now;
+      t = 0.0;
+    }
+    std::vector<geometry_msgs::TransformStamped> transforms;
+    for (const auto& timeline : playing_) {
+      if (timeline.states.empty()) continue;
+      const auto pose = poseAt(timeline, t);
+      geometry_msgs::TransformStamped tf;
+      tf.header.stamp = now;
+      tf.header.frame_id = c.map_frame;
+      tf.child_frame_id = timeline.robot_id + "/" + c.planned_frame;
+      tf.transform.translation.x = pose.x;
+      tf.transform.translation.y = pose.y;
+      tf2::Quaternion q;
+      q.setRPY(0, 0, pose.theta);
+      tf.transform.rotation.x = q.x(), tf.transform.rotation.y = q.y();
+      tf.transform.rotation.z = q.z(), tf.transform.rotation.w = q.w();
+      transforms.push_back(tf);
+    }
+    tf_broadcaster_.sendTransform(transforms);
+  } catch (const std::exception& e) {
+    ROS_ERROR_THROTTLE(5.0, "fleet_planner: playback: %s", e.what());
+  }
+}
+
+}  // namespace fleet_planner

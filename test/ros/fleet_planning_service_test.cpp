@@ -1,0 +1,318 @@
+// The PlanFleet service logic without a master: every plan it returns passes the independent
+// validator, and every kind of bad request gets its own status and a message that names the
+// robot and the problem.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <future>
+#include <limits>
+
+#include "fleet_planner/core/errors.h"
+#include "fleet_planner/core/plan_validator.h"
+#include "fleet_planner/ros/conversions.h"
+#include "fleet_planner/ros/fleet_planning_service.h"
+#include "ros_test_util.h"
+
+namespace fleet_planner::test {
+namespace {
+
+using Request = fleet_planner::PlanFleet::Request;
+using Response = fleet_planner::PlanFleet::Response;
+using RobotResultMsg = fleet_planner::RobotResult;
+
+constexpr double kRes = 0.25, kOx = -1.0, kOy = 2.0;
+constexpr double kPi = 3.14159265358979323846;
+double cx(int i) { return kOx + (i + 0.5) * kRes; }
+double cy(int j) { return kOy + (j + 0.5) * kRes; }
+
+fleet_planner::FleetFootprints registry() {
+  fleet_planner::FleetFootprints fleet;
+  fleet.robots = {circleFootprint("amr_1", 0.3), circleFootprint("amr_2", 0.2),
+                  blockFootprint("tug", -0.4, 0.4, -0.2, 0.2)};
+  return fleet;
+}
+
+Request swapRequest() {
+  Request request;
+  request.tasks = {task("amr_1", cx(3), cy(3), 0, cx(19), cy(8), 0),
+                   task("amr_2", cx(19), cy(3), kPi, cx(3), cy(8), kPi),
+                   task("tug", cx(11), cy(6), 0, cx(11), cy(3), kPi / 2)};
+  request.time_limit = 10.0;
+  return request;
+}
+
+class PlanningServiceTest : public ::testing::Test {
+ protected:
+  PlanningServiceTest() : service(PlannerConfig{}) {
+    service.setMap(occupancyGrid(24, 12, kRes, kOx, kOy, {{8, 8}, {8, 9}, {15, 1}}));
+    service.setFootprints(registry());
+  }
+  PlanCall plan(const Request& request) { return service.plan(request, nullptr); }
+
+  /// The response is a success whose timelines pass the validator and match the request.
+  void expectValidPlan(const Request& request, const Response& response) {
+    ASSERT_EQ(response.status, Response::SUCCESS) << response.message;
+    ASSERT_EQ(response.timelines.size(), request.tasks.size());
+    const GridMap map = convert(occupancyGrid(24, 12, kRes, kOx, kOy, {{8, 8}, {8, 9}, {15, 1}}), OccupancyPolicy{});
+    const Instance instance = instanceOf(request, registry(), response, kRes);
+    const auto validation = validatePlan(map, instance, planOf(response));
+    EXPECT_TRUE(validation.valid()) << validation.violation.message;
+    for (std::size_t i = 0; i < request.tasks.size(); ++i) {
+      const auto& states = response.timelines[i].states;
+      EXPECT_EQ(response.timelines[i].robot_id, request.tasks[i].robot_id);
+      EXPECT_NEAR(states.front().x, request.tasks[i].start.x, 1e-6);
+      EXPECT_NEAR(states.front().y, request.tasks[i].start.y, 1e-6);
+      EXPECT_NEAR(states.back().x, request.tasks[i].goal.x, 1e-6);
+      EXPECT_NEAR(states.back().y, request.tasks[i].goal.y, 1e-6);
+      EXPECT_NEAR(std::abs(wrapAngle(states.back().yaw - request.tasks[i].goal.theta)), 0.0, 1e-6);
+      EXPECT_EQ(response.robots[i].status, RobotResultMsg::OK) << response.robots[i].message;
+      for (std::size_t t = 0; t < states.size(); ++t) {
+        EXPECT_NEAR(states[t].time, t * PlannerConfig{}.seconds_per_step, 1e-9);
+      }
+    }
+  }
+
+  FleetPlanningService service;
+};
+
+TEST_F(PlanningServiceTest, PlansAValidFleetPlanWithEachBackendAndMode) {
+  // Raw LA-CBS is left out: it does not solve these three robots within 10 s (its constraint tree
+  // grows with every step a robot must wait; see the README's open work), layered LA-CBS does.
+  const std::vector<std::pair<const char*, std::uint8_t>> cases = {{"la_cbs", Request::DECOMPOSITION_LAYERED},
+                                                                   {"la_lacam", Request::DECOMPOSITION_LAYERED},
+                                                                   {"la_lacam", Request::DECOMPOSITION_RAW}};
+  for (const auto& [backend, mode] : cases) {
+    {
+      SCOPED_TRACE(std::string(backend) + (mode == Request::DECOMPOSITION_RAW ? " raw" : " layered"));
+      Request request = swapRequest();
+      request.backend = backend;
+      request.decomposition = mode;
+      const PlanCall call = plan(request);
+      expectValidPlan(request, call.response);
+      const auto& stats = call.response.statistics;
+      EXPECT_EQ(stats.robots, 3u);
+      EXPECT_GT(stats.soc, 0);
+      EXPECT_GT(stats.makespan, 0);
+      EXPECT_GE(stats.largest_subproblem, 1u);
+      if (mode == Request::DECOMPOSITION_RAW) {
+        EXPECT_EQ(call.response.subproblems.size(), 1u);
+      }
+      std::size_t robots_in_subproblems = 0;
+      for (const auto& s : call.response.subproblems) robots_in_subproblems += s.robot_ids.size();
+      EXPECT_EQ(robots_in_subproblems, 3u);
+      EXPECT_EQ(call.placements.size(), 3u);
+    }
+  }
+}
+
+TEST_F(PlanningServiceTest, SameRequestAndSeedGiveTheSamePlanAndReuseTheGraphs) {
+  Request request = swapRequest();
+  request.seed = 42;
+  const Response first = plan(request).response;
+  const Response second = plan(request).response;
+  ASSERT_EQ(first.status, Response::SUCCESS) << first.message;
+  EXPECT_EQ(planOf(first).paths, planOf(second).paths);
+  EXPECT_EQ(second.statistics.precompute_time, 0.0);  // graphs cached: same map, same footprints
+}
+
+TEST_F(PlanningServiceTest, DefaultTimeLimitIsMinusOne) {
+  Request request = swapRequest();
+  request.time_limit = -1;
+  expectValidPlan(request, plan(request).response);
+}
+
+TEST(PlanningServiceNoMap, AnswersNoMap) {
+  FleetPlanningService service{PlannerConfig{}};
+  service.setFootprints(registry());
+  const Response r = service.plan(swapRequest(), nullptr).response;
+  EXPECT_EQ(r.status, Response::NO_MAP);
+  EXPECT_NE(r.message.find("no map"), std::string::npos) << r.message;
+}
+
+TEST_F(PlanningServiceTest, UnknownRobotIsNamed) {
+  Request request = swapRequest();
+  request.tasks[1].robot_id = "ghost";
+  const Response r = plan(request).response;
+  EXPECT_EQ(r.status, Response::UNKNOWN_ROBOT);
+  EXPECT_NE(r.message.find("'ghost'"), std::string::npos) << r.message;
+  EXPECT_NE(r.message.find("amr_1"), std::string::npos) << "lists the known robots: " << r.message;
+  EXPECT_EQ(r.robots[1].status, RobotResultMsg::UNKNOWN_ROBOT);
+  EXPECT_EQ(r.robots[0].status, RobotResultMsg::NOT_PLANNED);
+  EXPECT_TRUE(r.timelines.empty());
+}
+
+TEST_F(PlanningServiceTest, StartInAnObstacleNamesTheCell) {
+  Request request = swapRequest();
+  request.tasks[0].start.x = cx(8);
+  request.tasks[0].start.y = cy(8);
+  const Response r = plan(request).response;
+  EXPECT_EQ(r.status, Response::INVALID_START);
+  EXPECT_EQ(r.robots[0].status, RobotResultMsg::INVALID_START);
+  EXPECT_NE(r.message.find("'amr_1'"), std::string::npos) << r.message;
+  EXPECT_NE(r.message.find("blocked cell"), std::string::npos) << r.message;
+}
+
+TEST_F(PlanningServiceTest, GoalOffTheMap) {
+  Request request = swapRequest();
+  request.tasks[2].goal.x = 40.0;
+  const Response r = plan(request).response;
+  EXPECT_EQ(r.status, Response::INVALID_GOAL);
+  EXPECT_EQ(r.robots[2].status, RobotResultMsg::INVALID_GOAL);
+  EXPECT_NE(r.message.find("'tug'"), std::string::npos) << r.message;
+  EXPECT_NE(r.message.find("off the map"), std::string::npos) << r.message;
+}
+
+TEST_F(PlanningServiceTest, NanPoseIsAnInvalidStart) {
+  Request request = swapRequest();
+  request.tasks[1].start.y = std::numeric_limits<double>::quiet_NaN();
+  const Response r = plan(request).response;
+  EXPECT_EQ(r.status, Response::INVALID_START);
+  EXPECT_NE(r.message.find("y is nan"), std::string::npos) << r.message;
+}
+
+TEST_F(PlanningServiceTest, ZeroTimeLimitIsAnInvalidRequest) {
+  Request request = swapRequest();
+  request.time_limit = 0.0;
+  const Response r = plan(request).response;
+  EXPECT_EQ(r.status, Response::INVALID_REQUEST);
+  EXPECT_NE(r.message.find("time_limit"), std::string::npos) << r.message;
+}
+
+TEST_F(PlanningServiceTest, UnknownBackendListsTheKnownOnes) {
+  Request request = swapRequest();
+  request.backend = "a_star_magic";
+  const Response r = plan(request).response;
+  EXPECT_EQ(r.status, Response::UNKNOWN_BACKEND);
+  EXPECT_NE(r.message.find("a_star_magic"), std::string::npos) << r.message;
+  EXPECT_NE(r.message.find("la_lacam"), std::string::npos) << r.message;
+}
+
+TEST_F(PlanningServiceTest, BadRequestFieldsAreNamed) {
+  Request request = swapRequest();
+  request.steps = 7;
+  EXPECT_NE(plan(request).response.message.find("steps"), std::string::npos);
+  request = swapRequest();
+  request.decomposition = 9;
+  EXPECT_NE(plan(request).response.message.find("decomposition"), std::string::npos);
+  request = swapRequest();
+  request.tasks[2].robot_id = "amr_1";
+  const Response r = plan(request).response;
+  EXPECT_EQ(r.status, Response::INVALID_REQUEST);
+  EXPECT_NE(r.message.find("two tasks"), std::string::npos) << r.message;
+  request.tasks.clear();
+  EXPECT_EQ(plan(request).response.status, Response::INVALID_REQUEST);
+}
+
+TEST_F(PlanningServiceTest, PosesOutsideTheTolerancesAreRejected) {
+  Request request = swapRequest();
+  request.tasks[0].start.x += 0.11;  // position_tolerance 0.1 m
+  Response r = plan(request).response;
+  EXPECT_EQ(r.status, Response::INVALID_START);
+  EXPECT_NE(r.message.find("position_tolerance"), std::string::npos) << r.message;
+
+  request = swapRequest();
+  request.tasks[0].goal.theta = 0.5;  // heading_tolerance 0.2 rad
+  r = plan(request).response;
+  EXPECT_EQ(r.status, Response::INVALID_GOAL);
+  EXPECT_NE(r.message.find("heading_tolerance"), std::string::npos) << r.message;
+
+  request = swapRequest();
+  request.tasks[0].start.x += 0.05;  // within the tolerances: snapped to the cell centre
+  request.tasks[0].start.theta = 2 * kPi + 0.1;
+  const Response ok = plan(request).response;
+  ASSERT_EQ(ok.status, Response::SUCCESS) << ok.message;
+  EXPECT_NEAR(ok.timelines[0].states.front().x, cx(3), 1e-9);
+}
+
+TEST_F(PlanningServiceTest, OverlappingStartsAreAConflict) {
+  Request request = swapRequest();
+  request.tasks[1].start.x = cx(5);
+  request.tasks[1].start.y = cy(3);
+  const Response r = plan(request).response;
+  EXPECT_EQ(r.status, Response::INVALID_START);
+  EXPECT_EQ(r.robots[0].status, RobotResultMsg::CONFLICT);
+  EXPECT_NE(r.message.find("overlaps"), std::string::npos) << r.message;
+}
+
+TEST_F(PlanningServiceTest, UnreachableGoalIsInfeasible) {
+  // A wall across the map at x = 16: amr_1 cannot reach its goal.
+  std::vector<std::pair<int, int>> wall;
+  for (int y = 1; y < 11; ++y) wall.push_back({16, y});
+  service.setMap(occupancyGrid(24, 12, kRes, kOx, kOy, wall));
+  Request request = swapRequest();
+  request.tasks.resize(1);
+  const Response r = plan(request).response;
+  EXPECT_EQ(r.status, Response::INFEASIBLE);
+  EXPECT_EQ(r.robots[0].status, RobotResultMsg::UNREACHABLE);
+  EXPECT_NE(r.message.find("not reachable"), std::string::npos) << r.message;
+}
+
+TEST_F(PlanningServiceTest, StartsFromTheLookupOrNoTransform) {
+  Request request = swapRequest();
+  request.tasks[0].start_from_tf = true;
+  request.tasks[0].start = geometry_msgs::Pose2D();  // ignored
+  const auto lookup = [](const std::string& id, geometry_msgs::Pose2D& pose, std::string& error) {
+    if (id != "amr_1") return error = "unexpected robot", false;
+    pose.x = cx(3), pose.y = cy(3), pose.theta = 0.0;
+    return true;
+  };
+  const Response ok = service.plan(request, lookup).response;
+  expectValidPlan(swapRequest(), ok);
+
+  const auto broken = [](const std::string&, geometry_msgs::Pose2D&, std::string& error) {
+    error = "frame amr_1/base_link does not exist";
+    return false;
+  };
+  const Response r = service.plan(request, broken).response;
+  EXPECT_EQ(r.status, Response::NO_TRANSFORM);
+  EXPECT_NE(r.message.find("amr_1/base_link"), std::string::npos) << r.message;
+}
+
+TEST_F(PlanningServiceTest, AFootprintUpdateIsUsedByTheNextPlan) {
+  auto fleet = registry();
+  fleet.robots[0].radius = 1.0;  // amr_1 no longer fits between the wall and its start
+  service.setFootprints(fleet);
+  const Response r = plan(swapRequest()).response;
+  EXPECT_EQ(r.status, Response::INVALID_START);
+  EXPECT_EQ(r.robots[0].status, RobotResultMsg::INVALID_START);
+  EXPECT_NE(r.message.find("'amr_1'"), std::string::npos) << r.message;
+}
+
+TEST_F(PlanningServiceTest, AMapUpdateDuringPlanningDoesNotTouchTheRunningCall) {
+  const Request request = swapRequest();
+  auto running = std::async(std::launch::async, [&] { return plan(request); });
+  std::vector<std::pair<int, int>> wall;
+  for (int y = 1; y < 11; ++y) wall.push_back({16, y});
+  service.setMap(occupancyGrid(24, 12, kRes, kOx, kOy, wall));
+  const PlanCall call = running.get();
+  // Planned on one map or the other, never a mix: the old one gives a valid plan, the new one
+  // (wall across the map) an INFEASIBLE answer.
+  if (call.response.status == Response::SUCCESS) {
+    expectValidPlan(request, call.response);
+  } else {
+    EXPECT_EQ(call.response.status, Response::INFEASIBLE) << call.response.message;
+  }
+  EXPECT_EQ(plan(request).response.status, Response::INFEASIBLE);  // the next call sees the new map
+}
+
+TEST(PlanningServiceMap, RejectsABrokenGridAndKeepsThePreviousOne) {
+  FleetPlanningService service{PlannerConfig{}};
+  service.setFootprints(registry());
+  auto grid = occupancyGrid(24, 12, kRes, kOx, kOy);
+  service.setMap(grid);
+  grid.data.pop_back();
+  EXPECT_THROW(service.setMap(grid), InputError);
+  EXPECT_EQ(service.plan(swapRequest(), nullptr).response.status, Response::SUCCESS);
+}
+
+TEST(StatusNames, NameEveryConstant) {
+  EXPECT_EQ(fleetStatusName(Response::SUCCESS), "SUCCESS");
+  EXPECT_EQ(fleetStatusName(Response::BUSY), "BUSY");
+  EXPECT_EQ(fleetStatusName(Response::INTERNAL_ERROR), "INTERNAL_ERROR");
+  EXPECT_EQ(fleetStatusName(200), "STATUS_200");
+  EXPECT_EQ(robotStatusName(RobotResultMsg::INVALID_FOOTPRINT), "INVALID_FOOTPRINT");
+  EXPECT_EQ(robotStatusName(RobotResultMsg::NOT_PLANNED), "NOT_PLANNED");
+}
+
+}  // namespace
+}  // namespace fleet_planner::test

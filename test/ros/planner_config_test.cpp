@@ -1,0 +1,69 @@
+// The node's configuration check names each bad parameter; the defaults pass.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "fleet_planner/ros/planner_config.h"
+
+namespace fleet_planner::test {
+namespace {
+
+bool mentions(const std::vector<std::string>& errors, const std::string& what) {
+  for (const auto& e : errors) {
+    if (e.find(what) != std::string::npos) return true;
+  }
+  return false;
+}
+
+TEST(PlannerConfigCheck, DefaultsAreValid) { EXPECT_TRUE(checkPlannerConfig(PlannerConfig{}).empty()); }
+
+TEST(PlannerConfigCheck, EachBadValueIsNamed) {
+  struct Case {
+    const char* parameter;
+    void (*spoil)(PlannerConfig&);
+  };
+  const Case cases[] = {
+      {"backend", [](PlannerConfig& c) { c.backend.clear(); }},
+      {"time_limit", [](PlannerConfig& c) { c.time_limit = 0; }},
+      {"time_limit", [](PlannerConfig& c) { c.time_limit = NAN; }},
+      {"decomposition_steps", [](PlannerConfig& c) { c.decomposition_steps = 5; }},
+      {"threads", [](PlannerConfig& c) { c.threads = 0; }},
+      {"busy_policy", [](PlannerConfig& c) { c.busy_policy = "wait"; }},
+      {"occupied_threshold", [](PlannerConfig& c) { c.occupied_threshold = 101; }},
+      {"unknown_policy", [](PlannerConfig& c) { c.unknown_policy = "maybe"; }},
+      {"position_tolerance", [](PlannerConfig& c) { c.position_tolerance = -0.1; }},
+      {"heading_tolerance", [](PlannerConfig& c) { c.heading_tolerance = INFINITY; }},
+      {"seconds_per_step", [](PlannerConfig& c) { c.seconds_per_step = 0; }},
+      {"map_frame", [](PlannerConfig& c) { c.map_frame.clear(); }},
+      {"base_frame", [](PlannerConfig& c) { c.base_frame.clear(); }},
+      {"tf_timeout", [](PlannerConfig& c) { c.tf_timeout = -1; }},
+      {"planned_frame", [](PlannerConfig& c) { c.planned_frame.clear(); }},
+      {"playback_rate", [](PlannerConfig& c) { c.playback_rate = 0; }},
+  };
+  for (const Case& c : cases) {
+    PlannerConfig config;
+    c.spoil(config);
+    const auto errors = checkPlannerConfig(config);
+    ASSERT_EQ(errors.size(), 1u) << c.parameter;
+    EXPECT_EQ(errors[0].rfind(c.parameter, 0), 0u) << errors[0];
+  }
+  PlannerConfig two;
+  two.time_limit = -3;
+  two.busy_policy = "later";
+  const auto errors = checkPlannerConfig(two);
+  EXPECT_EQ(errors.size(), 2u);
+  EXPECT_TRUE(mentions(errors, "got -3"));
+  EXPECT_TRUE(mentions(errors, "'reject' or 'queue'"));
+}
+
+TEST(PlannerConfigCheck, PoliciesBecomeCoreOptions) {
+  PlannerConfig config;
+  config.unknown_policy = "free";
+  config.occupied_threshold = 50;
+  EXPECT_TRUE(config.occupancyPolicy().unknown_is_free);
+  EXPECT_EQ(config.occupancyPolicy().occupied_threshold, 50);
+  EXPECT_DOUBLE_EQ(config.poseTolerance().heading, config.heading_tolerance);
+}
+
+}  // namespace
+}  // namespace fleet_planner::test
