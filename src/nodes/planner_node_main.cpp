@@ -11,8 +11,11 @@ int main(int argc, char** argv) {
   ros::NodeHandle nh, private_nh("~");
   try {
     const fleet_planner::PlannerConfig config = fleet_planner::loadPlannerConfig(private_nh);
+    for (const auto& name : fleet_planner::unknownPlannerParameters(private_nh)) {
+      ROS_WARN("fleet_planner: unknown parameter %s (ignored; see config/planner.yaml)", name.c_str());
+    }
     const auto problems = fleet_planner::checkPlannerConfig(config);
-    for (const auto& p : problems) ROS_FATAL("fleet_planner: parameter %s", p.c_str());
+    for (const auto& p : problems) ROS_FATAL("fleet_planner: parameter %s/%s", private_nh.getNamespace().c_str(), p.c_str());
     if (!problems.empty()) return 1;
 
     fleet_planner::BackendPlugins plugins;

@@ -22,6 +22,12 @@ using Clock = std::chrono::steady_clock;
 
 double since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
+std::string number(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof(buf), "%g", v);
+  return buf;
+}
+
 std::string quoted(const std::string& id) { return "robot '" + id + "'"; }
 
 std::string poseText(const geometry_msgs::Pose2D& p) {
@@ -181,8 +187,8 @@ void FleetPlanningService::planChecked(const Request& request, const StartLookup
     time_limit = config_.time_limit;
   } else if (!(time_limit > 0) || !std::isfinite(time_limit)) {
     return fail(call, Response::INVALID_REQUEST,
-                "time_limit must be > 0 seconds, or -1 for the planner's default (" +
-                    std::to_string(config_.time_limit) + " s); got " + std::to_string(request.time_limit));
+                "time_limit must be > 0 seconds, or -1 for the planner's default (" + number(config_.time_limit) +
+                    " s); got " + number(request.time_limit));
   }
   if (request.decomposition > Request::DECOMPOSITION_RAW) {
     return fail(call, Response::INVALID_REQUEST,

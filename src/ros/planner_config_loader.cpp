@@ -1,5 +1,6 @@
 // loadPlannerConfig: the parameter server -> PlannerConfig, with type checks that name the
 // parameter (ros::NodeHandle::param would silently keep the default for a mistyped value).
+#include <ros/param.h>
 #include <xmlrpcpp/XmlRpcValue.h>
 
 #include "fleet_planner/core/errors.h"
@@ -41,13 +42,44 @@ class Reader {
 
  private:
   bool get(const char* name, XmlRpc::XmlRpcValue& v) const { return nh_.getParam(name, v); }
+  static std::string describe(XmlRpc::XmlRpcValue& v) {
+    std::string xml = v.toXml();  // "<value>abc</value>", "<value><double>1.5</double></value>"
+    for (const char* tag : {"<value>", "</value>"}) {
+      for (auto at = xml.find(tag); at != std::string::npos; at = xml.find(tag)) xml.erase(at, std::string(tag).size());
+    }
+    return xml;
+  }
   [[noreturn]] void wrongType(const char* name, const char* expected, XmlRpc::XmlRpcValue& v) const {
-    throw InvalidInput("parameter " + nh_.resolveName(name) + " must be " + expected + " (got " + v.toXml() + ")");
+    throw InvalidInput("parameter " + nh_.resolveName(name) + " must be " + expected + " (got " + describe(v) + ")");
   }
   const ros::NodeHandle& nh_;
 };
 
 }  // namespace
+
+namespace {
+
+const char* const kParameters[] = {"backend",        "time_limit",         "decomposition",     "decomposition_steps",
+                                   "threads",        "busy_policy",        "occupied_threshold", "unknown_policy",
+                                   "position_tolerance", "heading_tolerance", "seconds_per_step", "map_frame",
+                                   "base_frame",     "tf_timeout",         "playback",          "planned_frame",
+                                   "playback_rate",  "playback_loop"};
+
+}  // namespace
+
+std::vector<std::string> unknownPlannerParameters(const ros::NodeHandle& nh) {
+  std::vector<std::string> names, unknown;
+  if (!ros::param::getParamNames(names)) return unknown;
+  const std::string prefix = nh.getNamespace() + "/";
+  for (const std::string& name : names) {
+    if (name.rfind(prefix, 0) != 0) continue;
+    const std::string key = name.substr(prefix.size());
+    bool known = false;
+    for (const char* k : kParameters) known = known || key == k;
+    if (!known) unknown.push_back(name);
+  }
+  return unknown;
+}
 
 PlannerConfig loadPlannerConfig(const ros::NodeHandle& nh) {
   PlannerConfig c;

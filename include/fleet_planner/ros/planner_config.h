@@ -50,4 +50,8 @@ std::vector<std::string> checkPlannerConfig(const PlannerConfig& config);
 /// naming the parameter for one of the wrong type; values are not range-checked here.
 PlannerConfig loadPlannerConfig(const ros::NodeHandle& nh);
 
+/// Parameters under `nh`'s namespace that the planner does not know (typos such as
+/// "time_limt"), as full names; the node warns about them.
+std::vector<std::string> unknownPlannerParameters(const ros::NodeHandle& nh);
+
 }  // namespace fleet_planner
