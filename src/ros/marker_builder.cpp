@@ -142,6 +142,7 @@ visualization_msgs::MarkerArray buildPlanMarkers(const std::vector<RobotPlacemen
       if (!style.planned_frame_suffix.empty()) {
         auto moving = marker(style, "planned", i, visualization_msgs::Marker::LINE_STRIP);
         moving.header.frame_id = p.robot_id + "/" + style.planned_frame_suffix;
+        moving.frame_locked = true;  // re-transformed every frame: it follows the playback
         moving.points = outline;
         moving.points.push_back(point(0, 0));
         moving.points.push_back(point(reach, 0));  // a heading tick inside the outline

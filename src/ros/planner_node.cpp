@@ -97,7 +97,9 @@ void PlannerNode::publish(const PlanCall& call) {
   if (c.playback && r.status == fleet_planner::PlanFleet::Response::SUCCESS) style.planned_frame_suffix = c.planned_frame;
   auto markers = buildPlanMarkers(call.placements, r.timelines, r.subproblems, style);
   const ros::Time now = ros::Time::now();
-  for (auto& m : markers.markers) m.header.stamp = now;
+  for (auto& m : markers.markers) {
+    if (!m.frame_locked) m.header.stamp = now;  // frame-locked ones use the latest transform (stamp 0)
+  }
   markers_pub_.publish(markers);
   if (r.status != fleet_planner::PlanFleet::Response::SUCCESS) return;
 

@@ -75,6 +75,7 @@ TEST(MarkerBuilder, StartsGoalsPathsAndLabelsPerRobot) {
   EXPECT_EQ(find(array, "path", 0)->points.size(), 5u);
   // Footprints in the planned frames, for playback.
   EXPECT_EQ(find(array, "planned", 0)->header.frame_id, "amr/planned");
+  EXPECT_TRUE(find(array, "planned", 0)->frame_locked);
   // Subproblems have different colours.
   const auto &c0 = find(array, "start", 0)->color, &c1 = find(array, "start", 1)->color;
   EXPECT_GT(std::abs(c0.r - c1.r) + std::abs(c0.g - c1.g) + std::abs(c0.b - c1.b), 0.3);
