@@ -12,6 +12,7 @@ import subprocess
 import threading
 import unittest
 
+import roslib.packages
 import rospy
 import rostest
 from visualization_msgs.msg import MarkerArray
@@ -149,8 +150,13 @@ class PlanFleetErrorsTest(unittest.TestCase):
         self.fail("no BUSY answer among %d calls: %s" % (len(answers), [a.status for a in answers]))
 
     def test_bad_parameter_stops_the_node(self):
+        # The executable as roslaunch finds it (rosrun is confused by a build folder inside the
+        # package's source folder, as scripts/build makes).
+        found = [p for p in roslib.packages.find_node("fleet_planner", "fleet_planner_node")
+                 if os.path.isfile(p) and os.access(p, os.X_OK)]
+        self.assertTrue(found, "fleet_planner_node not found")
         node = subprocess.run(
-            ["rosrun", "fleet_planner", "fleet_planner_node", "__name:=bad_planner",
+            [found[0], "__name:=bad_planner",
              "_time_limit:=-1.0", "_busy_policy:=sometimes"],
             stdout=subprocess.PIPE, stderr=subprocess.STDOUT, timeout=60, env=os.environ,
             universal_newlines=True)
