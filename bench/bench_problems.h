@@ -1,0 +1,28 @@
+#pragma once
+// Benchmark problems for the microbenchmarks: the shared benchmark maps and pools, found in
+// $FLEET_PLANNER_BENCHMARK or else in FLEET_PLANNER_BENCHMARK_DIR (set by CMake to
+// ../shared/benchmark next to the source folder). Loaded once per (map, K) and cached.
+#include <memory>
+#include <string>
+
+#include "fleet_planner/core/fleet_graphs.h"
+#include "fleet_planner/core/grid_map.h"
+#include "fleet_planner/core/instance.h"
+
+namespace fleet_planner::bench {
+
+struct Problem {
+  GridMap map;
+  Instance instance;  ///< the pool's "K mixed" robots
+  std::unique_ptr<FleetGraphs> graphs;  ///< built on first use by graphs()
+  const FleetGraphs& fleetGraphs();
+};
+
+/// The folder holding maps/ and instances/.
+std::string benchmarkDir();
+
+/// Map `name` with the "K mixed" robots of its pool; nullptr (and `error` set) if the files are
+/// missing or unreadable, so that the benchmark can skip with that message.
+Problem* problem(const std::string& name, int k, std::string& error);
+
+}  // namespace fleet_planner::bench
