@@ -5,6 +5,7 @@
 #include <chrono>
 
 #include "fleet_planner/core/errors.h"
+#include "fleet_planner/core/instance_check.h"
 #include "fleet_planner/core/plan_validator.h"
 #include "fleet_planner/layered/plan_merge.h"
 #include "fleet_planner/solvers/registry.h"
@@ -32,10 +33,19 @@ LayeredResult planLayered(const GridMap& map, const Instance& instance, const Fl
   auto solver = makeSolver(options.backend);
   const int n = static_cast<int>(instance.robots.size());
 
-  // 1. Decomposition.
+  // 1. Decomposition. It needs every robot to reach its target alone: an instance that fails the
+  // pre-check is INFEASIBLE, as the backends report it in raw mode.
   std::vector<SolvedSubproblem> order;
   auto t = std::chrono::steady_clock::now();
   if (options.decompose && n > 0) {
+    const SolvabilityReport report = checkSolvability(instance, graphs);
+    if (!report.solvable()) {
+      result.status = SolveStatus::Infeasible;
+      result.reason = report.problems.front().reason;
+      if (report.problems.size() > 1) result.reason += " (and " + std::to_string(report.problems.size() - 1) + " more)";
+      result.decompose_s = since(t);
+      return result;
+    }
     DecompositionOptions d;
     d.last_step = options.last_step;
     d.threads = options.threads;

@@ -138,6 +138,17 @@ TEST(LayeredPlanner, RawModeIsOneSubproblem) {
   EXPECT_EQ(r.metrics.soc, 14);
 }
 
+TEST(LayeredPlanner, UnreachableTargetIsInfeasibleInBothModes) {
+  const GridMap map = test::mapFromRows({"..@..", "..@.."});
+  Instance in;
+  in.robots = {dot("a", {0, 0, 0}, {4, 0, 0}), dot("b", {0, 1, 0}, {1, 1, 0})};
+  for (bool layered : {true, false}) {
+    const LayeredResult r = plan(map, in, "la_lacam", layered);
+    EXPECT_EQ(r.status, SolveStatus::Infeasible) << r.reason;
+    EXPECT_NE(r.reason.find("'a'"), std::string::npos) << r.reason;
+  }
+}
+
 TEST(LayeredPlanner, UnknownBackendThrows) {
   const GridMap map = test::freeMap(3, 1);
   Instance in;
