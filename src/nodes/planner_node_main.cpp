@@ -31,7 +31,7 @@ int main(int argc, char** argv) {
     ROS_INFO("fleet_planner: backend plugins:%s; default backend %s", names.c_str(), backend.c_str());
 
     fleet_planner::PlannerNode node(nh, private_nh, config);
-    ros::AsyncSpinner spinner(3);  // a planning call must not block map, registry and playback
+    ros::AsyncSpinner spinner(2);  // map, registry, playback; PlanFleet has its own threads
     spinner.start();
     ros::waitForShutdown();
   } catch (const std::exception& e) {

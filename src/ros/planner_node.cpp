@@ -22,13 +22,24 @@ PlannerNode::PlannerNode(ros::NodeHandle nh, ros::NodeHandle private_nh, Planner
   markers_pub_ = private_nh_.advertise<visualization_msgs::MarkerArray>("markers", 1, true);
   map_sub_ = nh_.subscribe("map", 1, &PlannerNode::onMap, this);
   fleet_sub_ = nh_.subscribe("fleet_footprints", 1, &PlannerNode::onFootprints, this);
-  plan_server_ = private_nh_.advertiseService("plan_fleet", &PlannerNode::onPlanFleet, this);
+  auto options = ros::AdvertiseServiceOptions::create<fleet_planner::PlanFleet>(
+      "plan_fleet",
+      [this](fleet_planner::PlanFleet::Request& request, fleet_planner::PlanFleet::Response& response) {
+        return onPlanFleet(request, response);
+      },
+      ros::VoidConstPtr(), &service_queue_);
+  plan_server_ = private_nh_.advertiseService(options);
+  service_spinner_.start();
   if (service_.config().playback) {
     playback_timer_ = nh_.createTimer(ros::Duration(1.0 / kPlaybackHz), &PlannerNode::onPlaybackTimer, this);
   }
 }
 
-PlannerNode::~PlannerNode() { shutting_down_ = true; }
+PlannerNode::~PlannerNode() {
+  shutting_down_ = true;  // a running plan stops at its next deadline check
+  plan_server_.shutdown();
+  service_spinner_.stop();
+}
 
 void PlannerNode::onMap(const nav_msgs::OccupancyGrid::ConstPtr& msg) {
   try {

@@ -3,10 +3,11 @@
 /// registry, offers ~plan_fleet, publishes the last plan's timelines and markers (latched) and
 /// plays the plan back as TF frames <robot>/<planned_frame>.
 ///
-/// Threads: callbacks run on an AsyncSpinner, so a map or registry update is taken while a call
-/// plans (the running call keeps its snapshot). One call plans at a time; a second one is
-/// answered BUSY (busy_policy: reject) or waits its turn (busy_policy: queue). No exception
-/// leaves a callback.
+/// Threads: PlanFleet calls have their own callback queue and two threads, so map, registry and
+/// playback callbacks (on the node's spinner) never wait for a plan, and a map update is taken
+/// while a call plans (the running call keeps its snapshot). One call plans at a time; a second
+/// one is answered BUSY (busy_policy: reject) or waits its turn (busy_policy: queue). No
+/// exception leaves a callback.
 #include <atomic>
 #include <memory>
 #include <mutex>
@@ -15,6 +16,7 @@
 #include <fleet_planner/FleetTimelines.h>
 #include <fleet_planner/PlanFleet.h>
 #include <nav_msgs/OccupancyGrid.h>
+#include <ros/callback_queue.h>
 #include <ros/ros.h>
 #include <tf2_ros/buffer.h>
 #include <tf2_ros/transform_broadcaster.h>
@@ -41,6 +43,8 @@ class PlannerNode {
   void onPlaybackTimer(const ros::TimerEvent& event);
 
   ros::NodeHandle nh_, private_nh_;
+  ros::CallbackQueue service_queue_;  ///< PlanFleet calls only
+  ros::AsyncSpinner service_spinner_{2, &service_queue_};
   FleetPlanningService service_;
   std::atomic<bool> shutting_down_{false};
   std::mutex plan_mutex_;  ///< held while a call plans
