@@ -33,9 +33,13 @@ void forEachConflict(const SearchSpace& space, const std::vector<StatePath>& pat
   const int T = horizon(paths);
   std::vector<Motion> m(n);
   for (int t = 0; t < std::max(T, 1); ++t) {
-    for (int i = 0; i < n; ++i) m[i] = motionAt(space, paths, i, t);
     for (int i = 0; i < n; ++i) {
+      if (!paths[i].empty()) m[i] = motionAt(space, paths, i, t);
+    }
+    for (int i = 0; i < n; ++i) {
+      if (paths[i].empty()) continue;
       for (int j = i + 1; j < n; ++j) {
+        if (paths[j].empty()) continue;
         const FootprintCells &ci = space.cells(i), &cj = space.cells(j);
         Cell c;
         if (t == 0 && CellSet::commonCell(ci.body(m[i].from.heading), {m[i].from.x, m[i].from.y},
@@ -65,6 +69,36 @@ std::optional<AgentConflict> firstConflict(const SearchSpace& space, const std::
     return true;
   });
   return first;
+}
+
+std::vector<AgentConflict> earliestConflictPerPair(const SearchSpace& space, const std::vector<StatePath>& paths,
+                                                   int max_count) {
+  std::vector<AgentConflict> found;
+  if (max_count <= 0) return found;
+  const std::size_t n = paths.size();
+  std::vector<bool> seen(n * n, false);
+  forEachConflict(space, paths, [&](const AgentConflict& c) {
+    const std::size_t pair = static_cast<std::size_t>(c.a) * n + static_cast<std::size_t>(c.b);
+    if (seen[pair]) return false;
+    seen[pair] = true;
+    found.push_back(c);
+    return static_cast<int>(found.size()) >= max_count;
+  });
+  return found;
+}
+
+std::vector<std::pair<int, int>> conflictingPairs(const SearchSpace& space, const std::vector<StatePath>& paths) {
+  const std::size_t n = paths.size();
+  std::vector<bool> seen(n * n, false);
+  std::vector<std::pair<int, int>> pairs;
+  forEachConflict(space, paths, [&](const AgentConflict& c) {
+    const std::size_t pair = static_cast<std::size_t>(c.a) * n + static_cast<std::size_t>(c.b);
+    if (!seen[pair]) pairs.emplace_back(c.a, c.b);
+    seen[pair] = true;
+    return false;
+  });
+  std::sort(pairs.begin(), pairs.end());
+  return pairs;
 }
 
 int countConflicts(const SearchSpace& space, const std::vector<StatePath>& paths) {

@@ -3,10 +3,13 @@
 
 #include <algorithm>
 #include <chrono>
+#include <optional>
 #include <queue>
 
 #include "fleet_planner/core/errors.h"
 #include "fleet_planner/solvers/agent_conflicts.h"
+#include "fleet_planner/solvers/cbs_split.h"
+#include "fleet_planner/solvers/pairwise_delay.h"
 #include "fleet_planner/solvers/registry.h"
 #include "fleet_planner/solvers/solve_common.h"
 #include "fleet_planner/solvers/space_time_astar.h"
@@ -17,103 +20,97 @@ namespace {
 
 const bool kRegistered = registerSolver("la_cbs", [] { return std::make_unique<LaCbs>(); });
 
-// The agent must not cover `cell` at time t (At) or during step t (During).
-struct Constraint {
-  enum class Kind { None, At, During };
-  Kind kind = Kind::None;
-  int agent = -1;
-  Cell cell;
-  int t = 0;
-};
-
-// A constraint-tree node stores only what it changes: its constraint and the paths it replanned.
+// A constraint-tree node stores only what it changes: its constraints and the paths it replanned.
 struct CtNode {
   int parent = -1;
-  Constraint constraint;
+  std::vector<CbsConstraint> constraints;
   std::vector<std::pair<int, StatePath>> paths;
   long long cost = 0;
+  long long f = 0;  // cost + the pairwise delay heuristic: a lower bound on any plan below
   int conflicts = 0;
 };
 
-int pathCostOf(const StatePath& p) {
-  int t = static_cast<int>(p.size()) - 1;
-  while (t > 0 && p[t - 1] == p.back()) --t;
-  return t;
-}
+// A split evaluated before choosing: its children (one per feasible branch) and how many of its
+// branches raise the cost (2: cardinal, 1: semi-cardinal, 0: non-cardinal; an infeasible branch
+// counts as raising it).
+struct EvaluatedSplit {
+  std::vector<CtNode> children;
+  int raising = 0;
+};
 
 class CbsSearch {
  public:
+  /// The search over all agents of `space`, with the pairwise delay heuristic if enabled.
   CbsSearch(const SearchSpace& space, const Subproblem& problem, const LaCbsOptions& options)
-      : space_(space), problem_(problem), options_(options), n_(space.numAgents()) {}
+      : space_(space), problem_(problem), options_(options), n_(space.numAgents()) {
+    for (int a = 0; a < n_; ++a) active_.push_back(a);
+    if (options_.pairwise_delay_nodes > 0 && n_ > 2) pairs_.emplace(n_);  // a pair's bound is its search
+  }
+  /// The search over agents i and j only (the others have empty paths), without heuristic,
+  /// that stops after `max_nodes` expansions or once its low-level searches have expanded
+  /// `max_expansions` states: it bounds the pair's cost from below.
+  CbsSearch(const SearchSpace& space, const Subproblem& problem, const LaCbsOptions& options, int i, int j,
+            long long max_nodes, long long max_expansions)
+      : space_(space), problem_(problem), options_(options), n_(space.numAgents()), active_{i, j},
+        max_nodes_(max_nodes), max_expansions_(max_expansions) {}
 
   SolveResult run() {
     SolveResult result;
     CtNode root;
     std::vector<StatePath> paths(n_);
-    for (int a = 0; a < n_; ++a) {
+    for (const int a : active_) {
       const AgentConstraints none;
       LowLevelResult ll = lowLevel(a, none, paths);
       if (ll.outcome != LowLevelResult::Outcome::Found) return lowLevelFailure(a, ll, true);
       paths[a] = std::move(ll.path);
     }
-    for (int a = 0; a < n_; ++a) {
-      root.cost += pathCostOf(paths[a]);
+    for (const int a : active_) {
+      root.cost += pathCost(paths[a]);
       root.paths.emplace_back(a, paths[a]);
     }
     root.conflicts = countConflicts(space_, paths);
+    if (!boundNode(root, paths)) return stopped();
     push(std::move(root));
 
     while (!open_.empty()) {
       if (problem_.deadline.expired()) return stopped();
       const int id = open_.top();
+      lower_bound_ = std::max(lower_bound_, nodes_[id].f);
+      if (max_nodes_ >= 0 &&
+          (stats_.high_level_nodes >= max_nodes_ || stats_.low_level_expansions >= max_expansions_)) {
+        return failure(SolveStatus::Timeout, "constraint tree reached its node limit");
+      }
       open_.pop();
       ++stats_.high_level_nodes;
       std::vector<StatePath> current = pathsOf(id);
-      bool adopted = true;
-      while (adopted) {  // bypass may adopt paths and look again at the same node
-        adopted = false;
-        const auto conflict = firstConflict(space_, current);
-        if (!conflict) return success(current);
-        if (conflict->t == 0 && conflict->kind == AgentConflict::Kind::Vertex) {
-          return failure(SolveStatus::Infeasible,
-                         space_.label(conflict->a) + " and " + space_.label(conflict->b) + " overlap at their starts");
+      std::optional<EvaluatedSplit> chosen;
+      while (!chosen) {  // bypass may adopt paths and look again at the same node
+        const std::vector<AgentConflict> candidates =
+            earliestConflictPerPair(space_, current, std::max(1, options_.max_candidate_conflicts));
+        if (candidates.empty()) {
+          lower_bound_ = nodes_[id].cost;
+          return success(current);
         }
-        std::vector<CtNode> children;
-        for (int side = 0; side < 2; ++side) {
-          const int agent = side == 0 ? conflict->a : conflict->b;
-          Constraint c;
-          c.agent = agent;
-          c.t = conflict->t;
-          c.cell = conflict->cell;
-          c.kind = conflict->kind == AgentConflict::Kind::Vertex ? Constraint::Kind::At : Constraint::Kind::During;
-          AgentConstraints constraints = constraintsOf(id, agent);
-          apply(constraints, c);
-          LowLevelResult ll = lowLevel(agent, constraints, current);
-          if (ll.outcome == LowLevelResult::Outcome::Expired) return stopped();
-          if (ll.outcome == LowLevelResult::Outcome::NodeLimit) hit_limit_ = true;
-          if (ll.outcome != LowLevelResult::Outcome::Found) continue;
-          std::vector<StatePath> next = current;
-          next[agent] = ll.path;
-          CtNode child;
-          child.parent = id;
-          child.constraint = c;
-          child.cost = nodes_[id].cost - pathCostOf(current[agent]) + pathCostOf(ll.path);
-          child.conflicts = countConflicts(space_, next);
-          if (options_.bypass && child.cost == nodes_[id].cost && child.conflicts < nodes_[id].conflicts) {
-            // Bypass: the node may hold this path too, it satisfies a superset of its constraints.
-            replacePath(nodes_[id], agent, ll.path);
-            nodes_[id].conflicts = child.conflicts;
-            current = std::move(next);
+        const AgentConflict& first = candidates.front();
+        if (first.t == 0 && first.kind == AgentConflict::Kind::Vertex) {
+          return failure(SolveStatus::Infeasible,
+                         space_.label(first.a) + " and " + space_.label(first.b) + " overlap at their starts");
+        }
+        bool adopted = false;
+        for (const AgentConflict& conflict : candidates) {
+          EvaluatedSplit split;
+          const Outcome outcome = evaluate(id, current, conflict, split);
+          if (outcome == Outcome::Expired) return stopped();
+          if (outcome == Outcome::Adopted) {
             adopted = true;
             break;
           }
-          child.paths.emplace_back(agent, std::move(ll.path));
-          children.push_back(std::move(child));
+          if (!chosen || split.raising > chosen->raising) chosen = std::move(split);
+          if (chosen->raising == 2) break;
         }
-        if (!adopted) {
-          for (auto& child : children) push(std::move(child));
-        }
+        if (adopted) chosen.reset();
       }
+      for (auto& child : chosen->children) push(std::move(child));
       if (memoryMb() > options_.max_memory_mb) {
         return failure(SolveStatus::Timeout, "constraint tree reached its memory limit of " +
                                                  std::to_string(static_cast<int>(options_.max_memory_mb)) + " MB");
@@ -124,8 +121,80 @@ class CbsSearch {
   }
 
   SolveStats stats() const { return stats_; }
+  /// A lower bound on the sum of costs of the searched agents in any plan without conflicts
+  /// among them: the optimum after success, the best open node's after the node limit.
+  long long lowerBound() const { return lower_bound_; }
+  /// Some low-level search stopped at its node limit (its subtree was dropped unexplored).
+  bool hitLimit() const { return hit_limit_; }
 
  private:
+  enum class Outcome { Evaluated, Adopted, Expired };
+
+  // Plans both branches of `conflict` at node `id` (whose paths are `current`) into `split`.
+  // Bypass (Boyarski et al. 2015): a child path that costs the same and conflicts less is
+  // adopted by the node itself (it satisfies a superset of the node's constraints): Adopted.
+  Outcome evaluate(int id, std::vector<StatePath>& current, const AgentConflict& conflict, EvaluatedSplit& split) {
+    for (CbsBranch& branch : splitConflict(space_, current, conflict)) {
+      const int agent = branch.replan;
+      AgentConstraints constraints = constraintsOf(id, agent);
+      for (const CbsConstraint& c : branch.constraints) {
+        if (c.agent == agent) applyConstraint(space_, c, constraints);
+      }
+      LowLevelResult ll = lowLevel(agent, constraints, current);
+      if (ll.outcome == LowLevelResult::Outcome::Expired) return Outcome::Expired;
+      if (ll.outcome == LowLevelResult::Outcome::NodeLimit) hit_limit_ = true;
+      if (ll.outcome != LowLevelResult::Outcome::Found) {
+        ++split.raising;
+        continue;
+      }
+      const StatePath old = std::move(current[agent]);
+      current[agent] = ll.path;
+      CtNode child;
+      child.parent = id;
+      child.constraints = std::move(branch.constraints);
+      child.cost = nodes_[id].cost - pathCost(old) + pathCost(ll.path);
+      child.conflicts = countConflicts(space_, current);
+      child.f = nodes_[id].f;  // a subtree of the node's: its bound holds
+      if (!boundNode(child, current)) return Outcome::Expired;
+      if (options_.bypass && child.cost == nodes_[id].cost && child.conflicts < nodes_[id].conflicts) {
+        replacePath(nodes_[id], agent, ll.path);
+        nodes_[id].conflicts = child.conflicts;
+        return Outcome::Adopted;
+      }
+      current[agent] = std::move(old);
+      if (child.cost > nodes_[id].cost) ++split.raising;
+      child.paths.emplace_back(agent, std::move(ll.path));
+      split.children.push_back(std::move(child));
+    }
+    return Outcome::Evaluated;
+  }
+
+  // Raises node.f to node.cost plus the pairwise delay heuristic of `paths` (the node's), first
+  // bounding the pairs that conflict in them and have no bound yet. False if the deadline came.
+  bool boundNode(CtNode& node, const std::vector<StatePath>& paths) {
+    node.f = std::max(node.f, node.cost);
+    if (!pairs_) return true;
+    for (const auto& [i, j] : conflictingPairs(space_, paths)) {
+      if (pairs_->known(i, j)) continue;
+      // The pair bounds may spend as many low-level expansions as the tree itself, plus a base.
+      const long long allowance = stats_.low_level_expansions - 2 * pair_expansions_ +
+                                  options_.pairwise_delay_expansions;
+      if (allowance <= 0) break;  // bounded later, if the tree gets that far
+      CbsSearch pair(space_, problem_, options_, i, j, options_.pairwise_delay_nodes, allowance);
+      const SolveResult r = pair.run();
+      stats_.low_level_expansions += pair.stats().low_level_expansions;
+      pair_expansions_ += pair.stats().low_level_expansions;
+      if (r.status == SolveStatus::Cancelled || problem_.deadline.expired()) return false;
+      // A low-level node limit may have cut off cheaper plans: then the bound proves nothing.
+      if (!pair.hitLimit()) pairs_->set(i, j, pair.lowerBound());
+      else pairs_->set(i, j, 0);
+    }
+    std::vector<int> costs(n_, 0);
+    for (const int a : active_) costs[a] = pathCost(paths[a]);
+    node.f = std::max(node.f, node.cost + pairs_->heuristic(costs));
+    return true;
+  }
+
   LowLevelResult lowLevel(int agent, const AgentConstraints& constraints, const std::vector<StatePath>& others) {
     LowLevelOptions o;
     o.max_nodes = options_.max_low_level_nodes;
@@ -136,15 +205,12 @@ class CbsSearch {
     return ll;
   }
 
-  static void apply(AgentConstraints& constraints, const Constraint& c) {
-    if (c.kind == Constraint::Kind::At) constraints.forbidCellAt(c.cell, c.t);
-    if (c.kind == Constraint::Kind::During) constraints.forbidCellDuring(c.cell, c.t);
-  }
-
   AgentConstraints constraintsOf(int id, int agent) const {
     AgentConstraints constraints;
     for (int i = id; i >= 0; i = nodes_[i].parent) {
-      if (nodes_[i].constraint.agent == agent) apply(constraints, nodes_[i].constraint);
+      for (const CbsConstraint& c : nodes_[i].constraints) {
+        if (c.agent == agent) applyConstraint(space_, c, constraints);
+      }
     }
     return constraints;
   }
@@ -187,6 +253,10 @@ class CbsSearch {
 
   SolveResult success(const std::vector<StatePath>& paths) {
     SolveResult r;
+    if (active_.size() < static_cast<std::size_t>(n_)) {  // a pair bound: no poses needed
+      r.status = SolveStatus::Success;
+      return r;
+    }
     r.status = SolveStatus::Success;
     r.paths = toPosePaths(space_, paths);
     return r;
@@ -213,8 +283,9 @@ class CbsSearch {
     const std::vector<CtNode>* nodes;
     bool operator()(int x, int y) const {
       const CtNode &a = (*nodes)[x], &b = (*nodes)[y];
-      if (a.cost != b.cost) return a.cost > b.cost;
+      if (a.f != b.f) return a.f > b.f;
       if (a.conflicts != b.conflicts) return a.conflicts > b.conflicts;
+      if (a.cost != b.cost) return a.cost > b.cost;
       return x > y;
     }
   };
@@ -223,6 +294,12 @@ class CbsSearch {
   const Subproblem& problem_;
   const LaCbsOptions& options_;
   const int n_;
+  std::vector<int> active_;                 // the agents searched; the others have empty paths
+  std::optional<PairwiseDelayBound> pairs_;  // top-level search only
+  long long max_nodes_ = -1;                 // pair bounds only
+  long long max_expansions_ = -1;            // pair bounds only
+  long long pair_expansions_ = 0;            // spent on pair bounds (also in stats_)
+  long long lower_bound_ = 0;
   std::vector<CtNode> nodes_;
   std::priority_queue<int, std::vector<int>, Worse> open_{Worse{&nodes_}};
   SolveStats stats_;

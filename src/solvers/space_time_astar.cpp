@@ -6,45 +6,6 @@
 
 namespace fleet_planner {
 
-void AgentConstraints::add(const Entry& e) {
-  by_time_[e.t].push_back(e);
-  all_.push_back(e);
-  max_time_ = std::max(max_time_, e.during ? e.t + 1 : e.t);
-}
-
-namespace {
-bool covers(const CellSet& set, const GridPose& p, const Cell& c) { return set.contains(c.x - p.x, c.y - p.y); }
-}  // namespace
-
-bool AgentConstraints::poseForbidden(const FootprintCells& cells, const GridPose& p, int t) const {
-  if (all_.empty()) return false;
-  const auto it = by_time_.find(t);
-  if (it == by_time_.end()) return false;
-  for (const Entry& e : it->second) {
-    if (!e.during && covers(cells.body(p.heading), p, e.c)) return true;
-  }
-  return false;
-}
-
-bool AgentConstraints::stepForbidden(const FootprintCells& cells, const GridPose& p, Action action, int t) const {
-  if (all_.empty()) return false;
-  const auto it = by_time_.find(t);
-  if (it == by_time_.end()) return false;
-  for (const Entry& e : it->second) {
-    if (e.during && covers(cells.swept(p.heading, action), p, e.c)) return true;
-  }
-  return false;
-}
-
-int AgentConstraints::lastBlockedAt(const FootprintCells& cells, const GridPose& p) const {
-  int last = -1;
-  for (const Entry& e : all_) {
-    // Waiting at p sweeps exactly its footprint.
-    if (e.t > last && covers(cells.body(p.heading), p, e.c)) last = e.t;
-  }
-  return last;
-}
-
 Action stepAction(const StateGraph& graph, StateId from, StateId to) {
   if (from == to) return Action::Wait;
   for (Action a : {Action::Forward, Action::RotateCcw, Action::RotateCw, Action::Backward}) {
@@ -96,7 +57,8 @@ class NodeTable {
 
 struct Node {
   StateId s;
-  int t;  // collapsed time
+  int t;              // collapsed time
+  bool held;          // reached by waiting at the target: its cost is an earlier arrival's
   int g;
   int f;
   int conflicts;
@@ -118,7 +80,11 @@ LowLevelResult spaceTimeAStar(const SearchSpace& space, int a, const AgentConstr
   const GridPose target_pose = g.pose(target);
   const int reserved_last = reservations.lastTaken(cells.body(target_pose.heading), {target_pose.x, target_pose.y});
   if (reserved_last == ReservationTable::kForever) return result;
-  const int goal_earliest = std::max(constraints.lastBlockedAt(cells, target_pose) + 1, reserved_last + 1);
+  const int target_blocked = constraints.lastBlockedAt(cells, target_pose);
+  if (target_blocked == AgentConstraints::kForever) return result;
+  const int goal_earliest = std::max({target_blocked + 1, reserved_last + 1, constraints.minCost()});
+  const int max_cost = constraints.maxCost();
+  if (goal_earliest > max_cost) return result;
   const int static_from = std::max(constraints.maxTime(), reservations.lastChange()) + 1;
 
   auto stepBlocked = [&](StateId s, Action act, int t) {
@@ -129,7 +95,13 @@ LowLevelResult spaceTimeAStar(const SearchSpace& space, int a, const AgentConstr
 
   std::vector<Node> nodes;
   NodeTable seen;
-  auto key = [](StateId s, int t) { return (static_cast<std::uint64_t>(t) << 32) | static_cast<std::uint32_t>(s); };
+  // A path's cost is its last arrival at the target, so a node reached by waiting there is kept
+  // apart from one that arrives (and only an arrival ends the search): this makes a lower bound
+  // on the cost exact (Li et al. 2020's wait_at_goal).
+  auto key = [](StateId s, int t, bool held) {
+    return (static_cast<std::uint64_t>(t) << 33) | (static_cast<std::uint64_t>(held) << 32) |
+           static_cast<std::uint32_t>(s);
+  };
   auto worse = [&nodes](int x, int y) {
     const Node &a1 = nodes[x], &b1 = nodes[y];
     if (a1.f != b1.f) return a1.f > b1.f;
@@ -143,8 +115,8 @@ LowLevelResult spaceTimeAStar(const SearchSpace& space, int a, const AgentConstr
   // Heuristic: the distance, but never less than the time left until the target can be held
   // (admissible and consistent: it drops by at most one per step).
   auto heuristic = [&](StateId s, int t) { return std::max(space.distance(a, s), goal_earliest - t); };
-  nodes.push_back({start, 0, 0, heuristic(start, 0), 0, -1});
-  seen.set(key(start, 0), 0);
+  nodes.push_back({start, 0, false, 0, heuristic(start, 0), 0, -1});
+  seen.set(key(start, 0, false), 0);
   open.push(0);
 
   while (!open.empty()) {
@@ -155,9 +127,9 @@ LowLevelResult spaceTimeAStar(const SearchSpace& space, int a, const AgentConstr
     const int index = open.top();
     open.pop();
     const Node node = nodes[index];
-    if (*seen.find(key(node.s, node.t)) != index) continue;  // superseded by a cheaper duplicate
+    if (*seen.find(key(node.s, node.t, node.held)) != index) continue;  // superseded by a cheaper duplicate
     ++result.expansions;
-    if (node.s == target && node.g >= goal_earliest) {
+    if (node.s == target && !node.held && node.g >= goal_earliest) {
       for (int i = index; i >= 0; i = nodes[i].parent) result.path.push_back(nodes[i].s);
       std::reverse(result.path.begin(), result.path.end());
       result.outcome = LowLevelResult::Outcome::Found;
@@ -167,15 +139,17 @@ LowLevelResult spaceTimeAStar(const SearchSpace& space, int a, const AgentConstr
     auto consider = [&](Action act, StateId next) {
       if (space.distance(a, next) < 0) return;
       const int h = heuristic(next, node.g + 1);
+      if (node.g + 1 + h > max_cost) return;  // f bounds the cost from below
       if (!space.allows(a, node.s, act)) return;
       if (constraints.poseForbidden(cells, g.pose(next), node.g + 1) || stepBlocked(node.s, act, node.g)) return;
       // Below the static layer time equals g, so a duplicate is never cheaper; in it, it can be.
-      const std::uint64_t k = key(next, t_next);
+      const bool held = act == Action::Wait && next == target;
+      const std::uint64_t k = key(next, t_next, held);
       const int* known = seen.find(k);
       if (known != nullptr && nodes[*known].g <= node.g + 1) return;
       const int c = options.conflicts ? node.conflicts + options.conflicts(node.s, act, node.g) : 0;
       seen.set(k, static_cast<int>(nodes.size()));
-      nodes.push_back({next, t_next, node.g + 1, node.g + 1 + h, c, index});
+      nodes.push_back({next, t_next, held, node.g + 1, node.g + 1 + h, c, index});
       open.push(static_cast<int>(nodes.size()) - 1);
     };
     consider(Action::Wait, node.s);

@@ -1,7 +1,9 @@
 #pragma once
 /// Conflicts among the agents of one subproblem, for the backends (the validator has its own,
-/// independent code). Paths are state ids at t = 0, 1, ...; an ended path stays at its end.
+/// independent code). Paths are state ids at t = 0, 1, ...; an ended path stays at its end; an
+/// empty path is an agent left out (it conflicts with nobody).
 #include <optional>
+#include <utility>
 #include <vector>
 
 #include "fleet_planner/solvers/search_space.h"
@@ -25,6 +27,14 @@ inline StateId stateAt(const StatePath& p, int t) {
 /// The earliest conflict (by step; at one step, vertex conflicts at t + 1 before transfers of t;
 /// then by agent pair), or nullopt.
 std::optional<AgentConflict> firstConflict(const SearchSpace& space, const std::vector<StatePath>& paths);
+
+/// The earliest conflict of each conflicting agent pair, in the order of firstConflict(), at
+/// most `max_count` of them (the candidates LA-CBS classifies before it splits).
+std::vector<AgentConflict> earliestConflictPerPair(const SearchSpace& space, const std::vector<StatePath>& paths,
+                                                   int max_count);
+
+/// The agent pairs (a < b) with at least one conflict, sorted.
+std::vector<std::pair<int, int>> conflictingPairs(const SearchSpace& space, const std::vector<StatePath>& paths);
 
 /// Number of (pair, step) with a vertex or transfer conflict.
 int countConflicts(const SearchSpace& space, const std::vector<StatePath>& paths);

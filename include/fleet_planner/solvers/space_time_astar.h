@@ -8,45 +8,13 @@
 /// agent without any path is reported as such instead of searching forever.
 #include <cstdint>
 #include <functional>
-#include <unordered_map>
 #include <vector>
 
 #include "fleet_planner/core/deadline.h"
+#include "fleet_planner/solvers/agent_constraints.h"
 #include "fleet_planner/solvers/search_space.h"
 
 namespace fleet_planner {
-
-/// CBS constraints of one agent, on cells: its footprint must not cover cell c at time t, or
-/// the cells it sweeps during step t (from t to t + 1) must not include c. A cell shared by two
-/// conflicting agents makes every pair of their poses covering it conflict, so forbidding it to
-/// one agent or the other splits soundly, and far more strongly than forbidding single states
-/// (the mutually conflicting constraint sets of Li et al. 2019).
-class AgentConstraints {
- public:
-  void forbidCellAt(Cell c, int t) { add({t, c, false}); }
-  void forbidCellDuring(Cell c, int t) { add({t, c, true}); }
-
-  /// The footprint at pose p at time t covers a forbidden cell.
-  bool poseForbidden(const FootprintCells& cells, const GridPose& p, int t) const;
-  /// The sweep of `action` from pose p during step t covers a forbidden cell.
-  bool stepForbidden(const FootprintCells& cells, const GridPose& p, Action action, int t) const;
-  /// Latest time at which standing at p (or waiting there) is forbidden (-1 if never).
-  int lastBlockedAt(const FootprintCells& cells, const GridPose& p) const;
-  /// Latest time any constraint speaks of (a step t counts as t + 1); -1 if none.
-  int maxTime() const { return max_time_; }
-  bool empty() const { return all_.empty(); }
-
- private:
-  struct Entry {
-    int t;
-    Cell c;
-    bool during;  // during step t, not at time t
-  };
-  void add(const Entry& e);
-  std::unordered_map<int, std::vector<Entry>> by_time_;
-  std::vector<Entry> all_;
-  int max_time_ = -1;
-};
 
 struct LowLevelOptions {
   long long max_nodes = 4'000'000;  ///< generated nodes before giving up (memory bound)
@@ -62,7 +30,8 @@ struct LowLevelResult {
   long long expansions = 0;
 };
 
-/// Cheapest path for agent `a` from its start to its target that it can hold forever after.
+/// Cheapest path for agent `a` from its start to its target that it can hold forever after,
+/// under `constraints` (including their bounds on the cost).
 LowLevelResult spaceTimeAStar(const SearchSpace& space, int a, const AgentConstraints& constraints,
                               const Deadline& deadline, const LowLevelOptions& options = {});
 
