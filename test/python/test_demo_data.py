@@ -1,6 +1,7 @@
 """Checks the demo data (maps/warehouse.yaml, config/demo_fleet.yaml, config/demo_tasks.yaml):
-the map is the documented warehouse, the fleet is mixed, and every start and goal footprint is
-on free cells without overlapping another robot's. No ROS master needed.
+the map is the documented warehouse, the fleet is mixed, every robot has a task. No ROS master
+needed; that the tasks plan (free, non-overlapping starts and goals) is checked by the planner
+itself in test/rostest/demo_plans.test.
 
 Run: PYTHONPATH=src /usr/bin/python3 -m unittest discover -s test/python
 """
@@ -11,7 +12,6 @@ import unittest
 from fleet_planner.fleet_config import load_fleet
 from fleet_planner.footprint import BLOCK, CIRCLE, POLYGON, reach
 from fleet_planner.map_yaml import load_map
-from fleet_planner.task_check import task_problems
 from fleet_planner.tasks_config import load_tasks
 
 ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..")
@@ -43,10 +43,9 @@ class DemoData(unittest.TestCase):
         for footprint in self.fleet:
             self.assertTrue(0.15 <= reach(footprint) <= 0.55, footprint)
 
-    def test_every_robot_has_a_task_at_free_non_overlapping_poses(self):
+    def test_every_robot_has_a_task(self):
         self.assertEqual(sorted(t.robot_id for t in self.tasks),
                          sorted(f.robot_id for f in self.fleet))
-        self.assertEqual(task_problems(self.map, self.fleet, self.tasks), [])
 
     def test_robots_cross_the_warehouse(self):
         crossing = [t for t in self.tasks if abs(t.goal[0] - t.start[0]) > 8.0]
