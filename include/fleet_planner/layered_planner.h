@@ -9,7 +9,8 @@
 /// subproblem gets a share of the remaining time (at least a quarter, more for a larger part of
 /// the robots left; the last one all of it). If a subproblem fails, or its share runs out, while
 /// time remains, it is merged with a neighbour and the merged one is solved again (the merges
-/// are reported). The final plan always passes the validator.
+/// are reported). The merged plan is then compressed (waits that no conflict needs are dropped)
+/// and always passes the validator.
 #include <string>
 #include <vector>
 
@@ -19,6 +20,8 @@
 #include "fleet_planner/core/instance.h"
 #include "fleet_planner/core/plan.h"
 #include "fleet_planner/decomposition/decomposition.h"
+#include "fleet_planner/layered/plan_compression.h"
+#include "fleet_planner/layered/plan_refinement.h"
 #include "fleet_planner/solvers/solver.h"
 
 namespace fleet_planner {
@@ -28,6 +31,8 @@ struct LayeredOptions {
   bool decompose = true;  ///< false: the whole fleet as one subproblem (raw)
   int last_step = 4;      ///< decomposition steps 1..4
   int threads = 1;        ///< relation graphs
+  bool refine = true;     ///< replan robots one at a time around the others (plan_refinement.h)
+  bool compress = true;   ///< drop every wait that no conflict needs (plan_compression.h)
   std::uint64_t seed = 0;
 };
 
@@ -50,6 +55,8 @@ struct LayeredResult {
   Decomposition decomposition;               ///< as computed (before any merge)
   std::vector<SolvedSubproblem> subproblems;  ///< as solved, in order
   std::vector<std::string> merges;            ///< one line per safeguard merge
+  RefinementStats refinement;                 ///< of the merged plan
+  CompressionStats compression;               ///< of the refined plan
   double decompose_s = 0.0;
   double solve_s = 0.0;
   bool success() const { return status == SolveStatus::Success; }

@@ -143,6 +143,8 @@ LayeredResult planLayered(const GridMap& map, const Instance& instance, const Fl
   }
   result.solve_s = since(t);
   result.subproblems = order;
+  if (options.refine) result.refinement = refinePlan(instance, graphs, paths, deadline);
+  if (options.compress) result.compression = compressPlan(graphs, paths, deadline);
   result.plan.paths = std::move(paths);
 
   const ActionModel model = n > 0 ? graphs.graph(0).actionModel() : ActionModel{};

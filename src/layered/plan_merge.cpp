@@ -1,45 +1,15 @@
 #include "fleet_planner/layered/plan_merge.h"
 
 #include <algorithm>
-#include <cmath>
 #include <set>
 
-#include "fleet_planner/core/action.h"
-#include "fleet_planner/core/collision.h"
+#include "path_steps.h"
 
 namespace fleet_planner {
 
-namespace {
-
-struct Box {
-  int x0, y0, x1, y1;
-  bool meets(const Box& o) const { return x0 <= o.x1 && o.x0 <= x1 && y0 <= o.y1 && o.y0 <= y1; }
-};
-
-// Bounding box of every cell a path (and its parked tail) can cover.
-Box boxOf(const FootprintCells& cells, const Path& p) {
-  const int r = static_cast<int>(std::ceil(std::sqrt(static_cast<double>(cells.maxNormSq())))) + 1;
-  Box b{p[0].x, p[0].y, p[0].x, p[0].y};
-  for (const GridPose& s : p) {
-    b.x0 = std::min(b.x0, s.x);
-    b.y0 = std::min(b.y0, s.y);
-    b.x1 = std::max(b.x1, s.x);
-    b.y1 = std::max(b.y1, s.y);
-  }
-  return {b.x0 - r, b.y0 - r, b.x1 + r, b.y1 + r};
-}
-
-Action actionAt(const Path& p, int t, const ActionModel& model) {
-  if (t + 1 >= static_cast<int>(p.size())) return Action::Wait;
-  return actionBetween(p[t], p[t + 1], model).value_or(Action::Wait);
-}
-
-bool stepsMeet(const FootprintCells& A, const Path& a, int ta, const FootprintCells& B, const Path& b, int tb,
-               const ActionModel& model) {
-  return sweepsOverlap(A, stateAt(a, ta), actionAt(a, ta, model), B, stateAt(b, tb), actionAt(b, tb, model));
-}
-
-}  // namespace
+using path_steps::boxOf;
+using path_steps::Box;
+using path_steps::stepsMeet;
 
 int delayToFit(const FleetGraphs& graphs, const std::vector<Path>& merged, const std::vector<char>& done,
                const std::vector<int>& robots, std::vector<Path>& fresh) {

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <limits>
 #include <optional>
 #include <queue>
 
@@ -44,6 +45,12 @@ class CbsSearch {
   CbsSearch(const SearchSpace& space, const Subproblem& problem, const LaCbsOptions& options)
       : space_(space), problem_(problem), options_(options), n_(space.numAgents()) {
     for (int a = 0; a < n_; ++a) active_.push_back(a);
+    if (options_.max_high_level_nodes >= 0 || options_.max_total_expansions >= 0) {
+      max_nodes_ = options_.max_high_level_nodes >= 0 ? options_.max_high_level_nodes
+                                                      : std::numeric_limits<long long>::max();
+      max_expansions_ = options_.max_total_expansions >= 0 ? options_.max_total_expansions
+                                                           : std::numeric_limits<long long>::max();
+    }
     if (options_.pairwise_delay_nodes > 0 && n_ > 2) pairs_.emplace(n_);  // a pair's bound is its search
   }
   /// The search over agents i and j only (the others have empty paths), without heuristic,
@@ -296,8 +303,8 @@ class CbsSearch {
   const int n_;
   std::vector<int> active_;                 // the agents searched; the others have empty paths
   std::optional<PairwiseDelayBound> pairs_;  // top-level search only
-  long long max_nodes_ = -1;                 // pair bounds only
-  long long max_expansions_ = -1;            // pair bounds only
+  long long max_nodes_ = -1;                 // pair bounds, or the options' budgets
+  long long max_expansions_ = -1;            // likewise
   long long pair_expansions_ = 0;            // spent on pair bounds (also in stats_)
   long long lower_bound_ = 0;
   std::vector<CtNode> nodes_;

@@ -21,6 +21,8 @@ void addSolveCommand(CLI::App& app) {
     std::string out;
     int threads = 2;
     bool details = false;
+    bool no_compress = false;
+    bool no_refine = false;
   };
   auto o = std::make_shared<Options>();
   addProblemOptions(cmd, o->problem);
@@ -34,6 +36,8 @@ void addSolveCommand(CLI::App& app) {
   cmd->add_option("--seed", o->seed, "random seed (same seed, same plan)");
   cmd->add_option("--out", o->out, "write the plan (YAML) here on success");
   cmd->add_option("--threads", o->threads, "threads for graphs and relation graphs")->check(CLI::PositiveNumber);
+  cmd->add_flag("--no-compress", o->no_compress, "keep the merged plan's waits (no plan compression)");
+  cmd->add_flag("--no-refine", o->no_refine, "keep the merged paths (no replanning of single robots)");
   cmd->add_flag("--details", o->details, "add the solved subproblems (robot ids, status, time, delay) to the JSON");
   cmd->callback([o] {
     const auto t0 = std::chrono::steady_clock::now();
@@ -51,6 +55,8 @@ void addSolveCommand(CLI::App& app) {
     options.last_step = static_cast<int>(o->steps.size());
     options.threads = o->threads;
     options.seed = o->seed;
+    options.compress = !o->no_compress;
+    options.refine = !o->no_refine;
     const LayeredResult result = planLayered(p.map, p.instance, graphs, options, deadline);
 
     const int n = static_cast<int>(p.instance.robots.size());
@@ -71,7 +77,15 @@ void addSolveCommand(CLI::App& app) {
                      {"decomposition_rate", result.decomposition.rate(n)},
                      {"solved_subproblems", result.subproblems.size()},
                      {"max_solved_subproblem", largest},
-                     {"merges", result.merges}};
+                     {"merges", result.merges},
+                     {"refine_s", result.refinement.time_s},
+                     {"refine_searches", result.refinement.searches},
+                     {"refine_improved", result.refinement.improved},
+                     {"refine_expansions", result.refinement.expansions},
+                     {"refine_group_searches", result.refinement.group_searches},
+                     {"refine_soc_saved", result.refinement.soc_saved},
+                     {"compress_s", result.compression.time_s},
+                     {"waits_removed", result.compression.waits_removed}};
     if (o->details) {
       nlohmann::json list = nlohmann::json::array();
       for (const auto& s : result.subproblems) {

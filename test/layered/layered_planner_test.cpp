@@ -67,7 +67,8 @@ TEST_P(LayeredBackends, RandomInstancesGiveValidDeterministicPlans) {
     ++solved;
     const ValidationResult v = validatePlan(map, in, a.plan);
     EXPECT_TRUE(v.valid()) << "seed " << seed << ": " << v.violation.message;
-    if (seed % 10 == 0) {
+    // Same input, same plan, unless the deadline cut the plan's improvement short.
+    if (seed % 10 == 0 && !a.refinement.deadline_hit && !a.compression.deadline_hit) {
       const LayeredResult b = plan(map, in, GetParam(), true, 5.0);
       if (b.success()) {
         ++compared;

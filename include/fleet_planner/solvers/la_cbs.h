@@ -45,6 +45,11 @@ struct LaCbsOptions {
   long long pairwise_delay_expansions = 2'000'000;
   long long max_low_level_nodes = 4'000'000;  ///< per low-level call
   double max_memory_mb = 2048;                ///< constraint tree paths; beyond: TIMEOUT
+  /// Constraint-tree expansions before giving up with TIMEOUT (-1: no limit): a budget that,
+  /// unlike a time limit, gives the same outcome on every machine.
+  long long max_high_level_nodes = -1;
+  /// Low-level expansions in all (checked between constraint-tree expansions; -1: no limit).
+  long long max_total_expansions = -1;
 };
 
 class LaCbs : public Solver {

@@ -1,0 +1,163 @@
+// Plan compression and refinement: hand-made plans with waits and detours that can go, and
+// waits that must stay; on random instances, both keep plans valid and never raise a cost.
+#include <gtest/gtest.h>
+
+#include <iostream>
+
+#include "fleet_planner/core/errors.h"
+#include "fleet_planner/core/instance_generator.h"
+#include "fleet_planner/core/plan_validator.h"
+#include "fleet_planner/core/random.h"
+#include "fleet_planner/layered/plan_compression.h"
+#include "fleet_planner/layered/plan_refinement.h"
+#include "fleet_planner/layered_planner.h"
+#include "test_maps.h"
+#include "test_robots.h"
+
+namespace fleet_planner {
+namespace {
+
+using test::dot;
+using test::footprintsOf;
+
+// The path from `start` doing `actions` in turn.
+Path pathOf(GridPose start, const std::vector<Action>& actions) {
+  Path p{start};
+  for (Action a : actions) p.push_back(applyAction(p.back(), a));
+  return p;
+}
+
+// The heading whose forward move goes one cell towards +y.
+int headingUp() {
+  for (int h = 0; h < 4; ++h) {
+    if (applyAction({0, 0, h}, Action::Forward).y == 1) return h;
+  }
+  return -1;
+}
+
+Plan planOf(std::vector<Path> paths) {
+  Plan plan;
+  plan.paths = std::move(paths);
+  return plan;
+}
+
+long long socOf(const Instance& in, const Plan& plan) {
+  std::vector<GridPose> targets;
+  for (const Robot& r : in.robots) targets.push_back(r.target);
+  return planMetrics(plan, targets).soc;
+}
+
+TEST(PlanCompression, DropsUselessWaitsAndKeepsNeededOnes) {
+  // c crosses row 1 at column 4 during steps 0 and 1; a, just left of it, must not move into
+  // (4, 1) before step 2. a's given path waits 5 steps: 2 are needed, 3 are not.
+  const GridMap map = test::freeMap(8, 3);
+  const int up = headingUp();
+  ASSERT_GE(up, 0);
+  Instance in;
+  in.robots = {dot("a", {3, 1, 0}, {5, 1, 0}), dot("c", {4, 0, up}, {4, 2, up})};
+  const Path a = pathOf({3, 1, 0}, {Action::Wait, Action::Wait, Action::Wait, Action::Wait, Action::Wait,
+                                    Action::Forward, Action::Forward});
+  const Path c = pathOf({4, 0, up}, {Action::Forward, Action::Forward});
+  ASSERT_EQ(a.back(), in.robots[0].target);
+  ASSERT_EQ(c.back(), in.robots[1].target);
+  Plan plan = planOf({a, c});
+  ASSERT_TRUE(validatePlan(map, in, plan).valid());
+  const FleetGraphs graphs(map, footprintsOf(in));
+
+  const CompressionStats stats = compressPlan(graphs, plan.paths, Deadline::in(5));
+  const ValidationResult check = validatePlan(map, in, plan);
+  EXPECT_TRUE(check.valid()) << check.violation.message;
+  EXPECT_EQ(stats.waits_removed, 3);
+  EXPECT_EQ(pathCost(plan.paths[0], in.robots[0].target), 4);  // two waits, two moves
+  EXPECT_EQ(plan.paths[1], c);
+}
+
+TEST(PlanRefinement, ReplacesADetourByTheShortestPath) {
+  // a's given path leaves row 2 and comes back (cost 13); nothing stands in the way of the
+  // straight path (cost 7). b stands still in a far corner.
+  const GridMap map = test::freeMap(9, 5);
+  Instance in;
+  in.robots = {dot("a", {0, 2, 0}, {7, 2, 0}), dot("b", {8, 4, 0}, {8, 4, 0})};
+  using A = Action;
+  const Path detour = pathOf({0, 2, 0}, {A::Forward, A::Forward, A::RotateCcw, A::Forward, A::RotateCw, A::Forward,
+                                         A::Forward, A::Forward, A::RotateCw, A::Forward, A::RotateCcw, A::Forward,
+                                         A::Forward});
+  ASSERT_EQ(detour.back(), in.robots[0].target);
+  Plan plan = planOf({detour, {in.robots[1].start}});
+  ASSERT_TRUE(validatePlan(map, in, plan).valid());
+  const FleetGraphs graphs(map, footprintsOf(in));
+
+  const RefinementStats stats = refinePlan(in, graphs, plan.paths, Deadline::in(5));
+  const ValidationResult check = validatePlan(map, in, plan);
+  EXPECT_TRUE(check.valid()) << check.violation.message;
+  EXPECT_EQ(pathCost(plan.paths[0], in.robots[0].target), 7);
+  EXPECT_EQ(stats.soc_saved, 6);
+  EXPECT_EQ(stats.improved, 1);
+}
+
+TEST(PlanRefinement, KeepsAPathThatOthersForce) {
+  // A one-row corridor: b, right in front of a, moves on at once; a cannot follow in the same
+  // step (their sweeps would share b's start cell), so its one wait is the best it can do, and
+  // refinement must change nothing.
+  const GridMap map = test::mapFromRows({"........"});
+  Instance in;
+  in.robots = {dot("a", {0, 0, 0}, {3, 0, 0}), dot("b", {1, 0, 0}, {7, 0, 0})};
+  using A = Action;
+  const Path a = pathOf({0, 0, 0}, {A::Wait, A::Forward, A::Forward, A::Forward});
+  const Path b = pathOf({1, 0, 0}, {A::Forward, A::Forward, A::Forward, A::Forward, A::Forward, A::Forward});
+  Plan plan = planOf({a, b});
+  ASSERT_TRUE(validatePlan(map, in, plan).valid());
+  const FleetGraphs graphs(map, footprintsOf(in));
+  const RefinementStats stats = refinePlan(in, graphs, plan.paths, Deadline::in(5));
+  EXPECT_EQ(stats.improved, 0);
+  EXPECT_EQ(plan.paths[0], a);
+  EXPECT_EQ(plan.paths[1], b);
+}
+
+// On seeded random instances, the layered planner with refinement and compression returns valid
+// plans whose SOC and makespan are never above those it returns without them.
+TEST(PlanImprovement, NeverWorseThanTheMergedPlan) {
+  int compared = 0, improved = 0;
+  for (std::uint64_t seed = 1; seed <= 60; ++seed) {
+    Rng rng(seed);
+    const int w = 14 + static_cast<int>(rng.uniformInt(0, 6)), h = 12 + static_cast<int>(rng.uniformInt(0, 6));
+    std::vector<std::string> rows(h, std::string(w, '.'));
+    for (int k = 0; k < w * h / 10; ++k) rows[rng.uniformInt(0, h - 1)][rng.uniformInt(0, w - 1)] = '@';
+    const GridMap map = test::mapFromRows(rows);
+    GeneratorOptions g;
+    g.robots = 3 + static_cast<int>(seed % 5);
+    g.seed = seed;
+    g.max_size = 1.0;
+    Instance in;
+    try {
+      in = generateInstance(map, g);
+    } catch (const InvalidInput&) {
+      continue;
+    }
+    const FleetGraphs graphs(map, footprintsOf(in));
+    for (const char* backend : {"la_cbs", "la_lacam"}) {
+      LayeredOptions plain;
+      plain.backend = backend;
+      plain.refine = plain.compress = false;
+      plain.seed = seed;
+      LayeredOptions better = plain;
+      better.refine = better.compress = true;
+      const LayeredResult a = planLayered(map, in, graphs, plain, Deadline::in(0.5));
+      const LayeredResult b = planLayered(map, in, graphs, better, Deadline::in(0.5));
+      if (!a.success() || !b.success()) continue;
+      ++compared;
+      const ValidationResult check = validatePlan(map, in, b.plan);
+      ASSERT_TRUE(check.valid()) << "seed " << seed << " " << backend << ": " << check.violation.message;
+      EXPECT_LE(b.metrics.soc, a.metrics.soc) << "seed " << seed << " " << backend;
+      EXPECT_LE(b.metrics.makespan, a.metrics.makespan) << "seed " << seed << " " << backend;
+      EXPECT_EQ(b.metrics.soc, socOf(in, b.plan));
+      if (b.metrics.soc < a.metrics.soc) ++improved;
+    }
+  }
+  EXPECT_GE(compared, 60);
+  EXPECT_GT(improved, 0);
+  std::cout << "[ improve   ] " << improved << " of " << compared << " plans improved\n";
+}
+
+}  // namespace
+}  // namespace fleet_planner
