@@ -1,16 +1,16 @@
 #pragma once
 /// Layered LA-MAPF (paper: Algorithm 6): decompose the instance into ordered subproblems, solve
-/// them one after another with a backend, merge, and validate.
+/// them with a backend, merge, improve and validate.
 ///
-/// Serial backends (LA-CBS) plan each subproblem around the timed paths of the earlier ones and
-/// the start footprints of the later ones. Parallel backends (LA-LaCAM) plan around the target
-/// footprints of earlier subproblems and the start footprints of later ones; their paths are
-/// then delayed at their starts until they fit among the earlier paths (Algorithm 5). Each
-/// subproblem gets a share of the remaining time (at least a quarter, more for a larger part of
-/// the robots left; the last one all of it). If a subproblem fails, or its share runs out, while
-/// time remains, it is merged with a neighbour and the merged one is solved again (the merges
-/// are reported). The merged plan is then compressed (waits that no conflict needs are dropped)
-/// and always passes the validator.
+/// Solving and merging (subproblem_solving.h): serial backends (LA-CBS) plan each level around
+/// the timed paths of the earlier levels of its cluster; parallel backends (LA-LaCAM) plan each
+/// subproblem around the target footprints of earlier ones; both block the start footprints of
+/// later subproblems, and plans are delayed at their starts until they fit (Algorithm 5).
+/// Independent work runs on `threads` threads with the same result. If a subproblem fails, or
+/// its share of the time runs out, while time remains, it is merged with a neighbour and solved
+/// again (the merges are reported). The merged plan is then refined (robots replanned around
+/// the others) and compressed (waits that no conflict needs are dropped), and always passes the
+/// validator.
 #include <string>
 #include <vector>
 
@@ -22,6 +22,7 @@
 #include "fleet_planner/decomposition/decomposition.h"
 #include "fleet_planner/layered/plan_compression.h"
 #include "fleet_planner/layered/plan_refinement.h"
+#include "fleet_planner/layered/subproblem_solving.h"
 #include "fleet_planner/solvers/solver.h"
 
 namespace fleet_planner {
@@ -30,21 +31,13 @@ struct LayeredOptions {
   std::string backend = "la_cbs";
   bool decompose = true;  ///< false: the whole fleet as one subproblem (raw)
   int last_step = 4;      ///< decomposition steps 1..4
-  int threads = 1;        ///< relation graphs
+  int threads = 1;        ///< relation graphs and subproblems; the result does not depend on it
+  /// Serial backends: plan clusters independently (in parallel) and merge them by delays, instead
+  /// of planning every level around all earlier paths (one chain, the paper's serial scheme).
+  bool independent_clusters = true;
   bool refine = true;     ///< replan robots one at a time around the others (plan_refinement.h)
   bool compress = true;   ///< drop every wait that no conflict needs (plan_compression.h)
   std::uint64_t seed = 0;
-};
-
-struct SolvedSubproblem {
-  std::vector<int> robots;  ///< instance indices
-  int cluster = 0;
-  int level = 0;
-  SolveStatus status = SolveStatus::Success;
-  std::string reason;
-  double time_s = 0.0;
-  int delay = 0;  ///< steps its paths were delayed by the merge (parallel backends)
-  SolveStats stats;  ///< the backend's statistics for its last attempt
 };
 
 struct LayeredResult {

@@ -1,8 +1,10 @@
 #include "cli_common.h"
 
+#include <algorithm>
 #include <fstream>
 #include <iostream>
 #include <string>
+#include <thread>
 
 #include "fleet_planner/core/errors.h"
 #include "fleet_planner/core/instance_check.h"
@@ -50,5 +52,7 @@ Problem loadProblem(const ProblemOptions& options) {
 }
 
 void printJsonLine(const nlohmann::json& j) { std::cout << j.dump() << std::endl; }
+
+int defaultThreads() { return static_cast<int>(std::max(1u, std::thread::hardware_concurrency())); }
 
 }  // namespace fleet_planner::cli

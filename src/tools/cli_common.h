@@ -11,6 +11,9 @@
 
 namespace fleet_planner::cli {
 
+/// Threads to use by default: the machine's cores (at least 1).
+int defaultThreads();
+
 /// The process's peak resident set size in MB (VmHWM), or -1 where /proc is missing.
 double peakRssMb();
 

@@ -13,7 +13,7 @@ void addDecomposeCommand(CLI::App& app) {
   struct Options {
     ProblemOptions problem;
     std::string steps = "1234";
-    int threads = 2;
+    int threads = defaultThreads();
     bool check = false;
     bool list = false;
   };

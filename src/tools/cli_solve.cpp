@@ -19,10 +19,11 @@ void addSolveCommand(CLI::App& app) {
     double time_limit = 60;
     std::uint64_t seed = 0;
     std::string out;
-    int threads = 2;
+    int threads = defaultThreads();
     bool details = false;
     bool no_compress = false;
     bool no_refine = false;
+    bool one_chain = false;
   };
   auto o = std::make_shared<Options>();
   addProblemOptions(cmd, o->problem);
@@ -35,9 +36,11 @@ void addSolveCommand(CLI::App& app) {
       ->check(CLI::NonNegativeNumber);
   cmd->add_option("--seed", o->seed, "random seed (same seed, same plan)");
   cmd->add_option("--out", o->out, "write the plan (YAML) here on success");
-  cmd->add_option("--threads", o->threads, "threads for graphs and relation graphs")->check(CLI::PositiveNumber);
+  cmd->add_option("--threads", o->threads, "threads for graphs, relation graphs and subproblems (default: cores)")->check(CLI::PositiveNumber);
   cmd->add_flag("--no-compress", o->no_compress, "keep the merged plan's waits (no plan compression)");
   cmd->add_flag("--no-refine", o->no_refine, "keep the merged paths (no replanning of single robots)");
+  cmd->add_flag("--one-chain", o->one_chain,
+                "serial backends: plan every level around all earlier paths (no independent clusters)");
   cmd->add_flag("--details", o->details, "add the solved subproblems (robot ids, status, time, delay) to the JSON");
   cmd->callback([o] {
     const auto t0 = std::chrono::steady_clock::now();
@@ -57,6 +60,7 @@ void addSolveCommand(CLI::App& app) {
     options.seed = o->seed;
     options.compress = !o->no_compress;
     options.refine = !o->no_refine;
+    options.independent_clusters = !o->one_chain;
     const LayeredResult result = planLayered(p.map, p.instance, graphs, options, deadline);
 
     const int n = static_cast<int>(p.instance.robots.size());

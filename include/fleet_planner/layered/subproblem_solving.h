@@ -1,0 +1,67 @@
+#pragma once
+/// Solving the ordered subproblems of a decomposition and merging their plans (paper:
+/// Algorithms 5 and 6), on several threads, with the same result for any number of them.
+///
+/// What each subproblem sees is fixed before anything is solved, so independent work can run at
+/// once:
+/// - every subproblem blocks the start footprints of all later subproblems;
+/// - a parallel backend (LA-LaCAM) blocks the target footprints of all earlier subproblems;
+///   each subproblem is a unit of work, and its plan is delayed at the starts until it fits
+///   among the earlier ones (Algorithm 5);
+/// - a serial backend (LA-CBS) plans around the timed paths of the earlier subproblems of its
+///   own cluster and blocks the targets of earlier subproblems of other clusters. Each cluster
+///   (its levels in order) is a unit of work, and its plan is delayed as a whole until it fits
+///   among the earlier clusters. Clusters have no solving order and subproblems are listed
+///   cluster by cluster, so this is the paper's serial scheme inside a cluster and its parallel
+///   scheme between clusters; both keep every subproblem solvable.
+///
+/// Units run on a pool of `threads`. Then the subproblems are merged in order. The first one
+/// that failed, while time remains, is merged with its neighbour (the next one, or for the last
+/// the one before; their clusters become one) and the units it touched are solved again;
+/// every merge is reported. Each subproblem's seed is the planner's seed plus its first
+/// position in the decomposition, so results do not depend on the threads.
+#include <string>
+#include <vector>
+
+#include "fleet_planner/core/deadline.h"
+#include "fleet_planner/core/fleet_graphs.h"
+#include "fleet_planner/core/instance.h"
+#include "fleet_planner/core/plan.h"
+#include "fleet_planner/solvers/solver.h"
+
+namespace fleet_planner {
+
+struct SolvedSubproblem {
+  std::vector<int> robots;  ///< instance indices
+  int cluster = 0;
+  int level = 0;
+  SolveStatus status = SolveStatus::Success;
+  std::string reason;
+  double time_s = 0.0;
+  int delay = 0;        ///< steps its paths were delayed by the merge (its cluster's, for serial backends)
+  int attempts = 0;     ///< times it was solved (more than one after a merge before it)
+  SolveStats stats;     ///< the backend's statistics for its last attempt
+  std::uint64_t seed_offset = 0;  ///< its first position in the decomposition
+};
+
+struct SubproblemSolving {
+  SolveStatus status = SolveStatus::Success;
+  std::string reason;
+  std::vector<Path> paths;                 ///< on success: one per robot of the instance
+  std::vector<SolvedSubproblem> order;     ///< as solved, in order
+  std::vector<std::string> merges;         ///< one line per safeguard merge
+};
+
+struct SubproblemSolvingOptions {
+  std::string backend = "la_cbs";
+  int threads = 1;
+  std::uint64_t seed = 0;
+};
+
+/// Solves `order` (robots, cluster and level set; cluster-major order) and merges the plans.
+/// Throws InvalidInput for an unknown backend.
+SubproblemSolving solveSubproblems(const Instance& instance, const FleetGraphs& graphs,
+                                   std::vector<SolvedSubproblem> order, const SubproblemSolvingOptions& options,
+                                   const Deadline& deadline);
+
+}  // namespace fleet_planner

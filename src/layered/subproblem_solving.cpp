@@ -1,0 +1,209 @@
+// Solving and merging the subproblems; see subproblem_solving.h.
+#include "fleet_planner/layered/subproblem_solving.h"
+
+#include <algorithm>
+#include <atomic>
+#include <optional>
+#include <thread>
+
+#include "fleet_planner/layered/plan_merge.h"
+#include "fleet_planner/solvers/registry.h"
+
+namespace fleet_planner {
+
+namespace {
+
+std::string idsOf(const Instance& instance, const std::vector<int>& robots) {
+  std::string out;
+  for (std::size_t k = 0; k < robots.size() && k < 6; ++k) out += (k ? "," : "") + instance.robots[robots[k]].id;
+  if (robots.size() > 6) out += ",... (" + std::to_string(robots.size()) + " robots)";
+  return out;
+}
+
+class Solving {
+ public:
+  Solving(const Instance& instance, const FleetGraphs& graphs, const SubproblemSolvingOptions& options,
+          const Deadline& deadline)
+      : instance_(instance), graphs_(graphs), options_(options), deadline_(deadline),
+        serial_(makeSolver(options.backend)->avoidsMovingObstacles()) {}
+
+  SubproblemSolving run(std::vector<SolvedSubproblem> order) {
+    SubproblemSolving out;
+    order_ = std::move(order);
+    results_.assign(order_.size(), std::nullopt);
+    for (;;) {
+      solvePending();
+      std::size_t k = 0;
+      while (k < order_.size() && results_[k] && results_[k]->success()) ++k;
+      if (k == order_.size()) break;
+      const SolveResult failed = results_[k] ? *results_[k] : SolveResult{};
+      if (deadline_.expired() || order_.size() == 1) {
+        out.status = deadline_.cancelled() ? SolveStatus::Cancelled
+                     : deadline_.expired() ? SolveStatus::Timeout
+                                           : failed.status;
+        out.reason = "subproblem " + std::to_string(k) + " (" + idsOf(instance_, order_[k].robots) + "): " +
+                     (results_[k] ? failed.reason : std::string("not solved"));
+        out.order = order_;
+        out.merges = merges_;
+        return out;
+      }
+      mergeWithNeighbour(k, failed);
+    }
+    out.paths = mergePlans();
+    out.order = order_;
+    out.merges = merges_;
+    return out;
+  }
+
+ private:
+  // Units of work: a subproblem (parallel backends) or the unsolved rest of a cluster's chain
+  // (serial backends), in order.
+  std::vector<std::vector<std::size_t>> pendingUnits() const {
+    std::vector<std::vector<std::size_t>> units;
+    for (std::size_t k = 0; k < order_.size(); ++k) {
+      if (results_[k]) continue;
+      const bool chained = serial_ && !units.empty() && order_[units.back().back()].cluster == order_[k].cluster &&
+                           units.back().back() + 1 == k;
+      if (chained) {
+        units.back().push_back(k);
+      } else {
+        units.push_back({k});
+      }
+    }
+    return units;
+  }
+
+  void solvePending() {
+    const auto units = pendingUnits();
+    if (units.empty()) return;
+    pending_robots_ = 0;
+    for (const auto& u : units) {
+      for (std::size_t k : u) pending_robots_ += static_cast<int>(order_[k].robots.size());
+    }
+    std::atomic<std::size_t> next{0};
+    auto work = [&] {
+      for (std::size_t u = next++; u < units.size(); u = next++) {
+        for (std::size_t k : units[u]) {
+          solveOne(k);
+          if (!results_[k]->success()) break;  // the rest of the chain plans around it
+        }
+      }
+    };
+    const int threads = std::max(1, std::min<int>(options_.threads, static_cast<int>(units.size())));
+    std::vector<std::thread> pool;
+    for (int t = 1; t < threads; ++t) pool.emplace_back(work);
+    work();
+    for (auto& t : pool) t.join();
+  }
+
+  void solveOne(std::size_t k) {
+    Subproblem sub;
+    sub.instance = &instance_;
+    sub.graphs = &graphs_;
+    sub.robots = order_[k].robots;
+    sub.seed = options_.seed + order_[k].seed_offset;
+    for (std::size_t m = k + 1; m < order_.size(); ++m) {
+      for (int r : order_[m].robots) sub.blocked.push_back({r, instance_.robots[r].start});
+    }
+    for (std::size_t m = 0; m < k; ++m) {
+      const bool own_chain = serial_ && order_[m].cluster == order_[k].cluster;
+      for (std::size_t a = 0; a < order_[m].robots.size(); ++a) {
+        const int r = order_[m].robots[a];
+        if (own_chain) {
+          sub.moving.push_back({r, results_[m]->paths[a]});
+        } else {
+          sub.blocked.push_back({r, instance_.robots[r].target});
+        }
+      }
+    }
+    // A time share: at least a quarter of what is left, more for a larger part of the robots
+    // being solved; the last subproblem gets all of it. A share that runs out triggers the
+    // safeguard.
+    const double share = k + 1 == order_.size()
+                             ? 1.0
+                             : std::max(0.25, static_cast<double>(sub.robots.size()) / std::max(1, pending_robots_));
+    sub.deadline = deadline_.within(deadline_.remaining() * share);
+    SolveResult solved = makeSolver(options_.backend)->solve(sub);
+    SolvedSubproblem& s = order_[k];
+    s.status = solved.status;
+    s.reason = solved.reason;
+    s.time_s = solved.stats.time_s;
+    s.stats = solved.stats;
+    ++s.attempts;
+    results_[k] = std::move(solved);
+  }
+
+  // Safeguard: merge subproblem k with the next one (or, for the last, with the one before);
+  // their clusters become one. Results that depended on either are dropped.
+  void mergeWithNeighbour(std::size_t k, const SolveResult& failed) {
+    const std::size_t other = k + 1 < order_.size() ? k + 1 : k - 1;
+    const std::size_t first = std::min(k, other);
+    merges_.push_back("subproblem " + std::to_string(k) + " (" + idsOf(instance_, order_[k].robots) + ") failed: " +
+                      (results_[k] ? failed.reason : std::string("not solved")) + " (after " +
+                      std::to_string(failed.stats.time_s).substr(0, 5) + " s, " +
+                      std::to_string(failed.stats.high_level_nodes) + " high-level nodes, " +
+                      std::to_string(failed.stats.low_level_expansions) + " expansions); merged with subproblem " +
+                      std::to_string(other));
+    const int keep = order_[first].cluster, gone = order_[first + 1].cluster;
+    for (auto& s : order_) {
+      if (s.cluster == gone) s.cluster = keep;
+    }
+    std::vector<int> joined = order_[first].robots;
+    joined.insert(joined.end(), order_[first + 1].robots.begin(), order_[first + 1].robots.end());
+    std::sort(joined.begin(), joined.end());
+    order_[first].robots = joined;
+    order_.erase(order_.begin() + static_cast<std::ptrdiff_t>(first) + 1);
+    results_.erase(results_.begin() + static_cast<std::ptrdiff_t>(first) + 1);
+    results_[first].reset();
+    if (serial_) {
+      for (std::size_t m = first + 1; m < order_.size() && order_[m].cluster == keep; ++m) results_[m].reset();
+    }
+  }
+
+  // Algorithm 5: each unit's paths, delayed at the starts until they fit among the earlier ones.
+  std::vector<Path> mergePlans() {
+    const int n = static_cast<int>(instance_.robots.size());
+    std::vector<Path> paths(n);
+    std::vector<char> done(n, 0);
+    for (std::size_t k = 0; k < order_.size();) {
+      std::size_t end = k + 1;
+      if (serial_) {
+        while (end < order_.size() && order_[end].cluster == order_[k].cluster) ++end;
+      }
+      std::vector<int> robots;
+      std::vector<Path> fresh;
+      for (std::size_t m = k; m < end; ++m) {
+        robots.insert(robots.end(), order_[m].robots.begin(), order_[m].robots.end());
+        fresh.insert(fresh.end(), results_[m]->paths.begin(), results_[m]->paths.end());
+      }
+      const int delay = delayToFit(graphs_, paths, done, robots, fresh);
+      for (std::size_t a = 0; a < robots.size(); ++a) {
+        paths[robots[a]] = std::move(fresh[a]);
+        done[robots[a]] = 1;
+      }
+      for (std::size_t m = k; m < end; ++m) order_[m].delay = delay;
+      k = end;
+    }
+    return paths;
+  }
+
+  const Instance& instance_;
+  const FleetGraphs& graphs_;
+  SubproblemSolvingOptions options_;
+  Deadline deadline_;
+  bool serial_;
+  std::vector<SolvedSubproblem> order_;
+  std::vector<std::optional<SolveResult>> results_;
+  std::vector<std::string> merges_;
+  int pending_robots_ = 0;
+};
+
+}  // namespace
+
+SubproblemSolving solveSubproblems(const Instance& instance, const FleetGraphs& graphs,
+                                   std::vector<SolvedSubproblem> order, const SubproblemSolvingOptions& options,
+                                   const Deadline& deadline) {
+  return Solving(instance, graphs, options, deadline).run(std::move(order));
+}
+
+}  // namespace fleet_planner
