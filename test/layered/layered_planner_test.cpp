@@ -83,6 +83,38 @@ TEST_P(LayeredBackends, RandomInstancesGiveValidDeterministicPlans) {
             << compared << " rerun identical\n";
 }
 
+// Independent subproblems (LA-LaCAM) or clusters (LA-CBS) run on a thread pool: one thread or
+// three give the same plan.
+TEST_P(LayeredBackends, ThreadsDoNotChangeThePlan) {
+  int compared = 0;
+  for (std::uint64_t seed = 1; seed <= 80 && compared < 15; ++seed) {
+    const GridMap map = randomMap(seed + 1000);
+    GeneratorOptions g;
+    g.robots = 4 + static_cast<int>(seed % 5);
+    g.seed = seed;
+    g.max_size = 1.0;
+    Instance in;
+    try {
+      in = generateInstance(map, g);
+    } catch (const InvalidInput&) {
+      continue;
+    }
+    const FleetGraphs graphs(map, footprintsOf(in));
+    LayeredOptions o;
+    o.backend = GetParam();
+    o.seed = seed;
+    o.threads = 1;
+    const LayeredResult one = planLayered(map, in, graphs, o, Deadline::in(1.0));
+    o.threads = 3;
+    const LayeredResult three = planLayered(map, in, graphs, o, Deadline::in(1.0));
+    if (!one.success() || !three.success() || one.refinement.deadline_hit || three.refinement.deadline_hit) continue;
+    ++compared;
+    EXPECT_EQ(one.plan.paths, three.plan.paths) << "seed " << seed;
+    EXPECT_EQ(one.subproblems.size(), three.subproblems.size()) << "seed " << seed;
+  }
+  EXPECT_GE(compared, 12);
+}
+
 TEST_P(LayeredBackends, FigureOneBSolvesWithA2First) {
   // Paper Figure 1 B on a plus-shaped map: a2 crosses through a1's target, so a2 goes first.
   const GridMap map = test::mapFromRows({"@.@", "...", "@.@"});
