@@ -87,6 +87,18 @@ TEST(PoseConversion, SnapsWithinTolerancesAndExplainsOtherwise) {
   EXPECT_NE(toGridPose(map, pose(-0.01, 0.75, 0), tolerance).error.find("off the map"), std::string::npos);
   EXPECT_EQ(toGridPose(map, pose(NAN, 0.75, 0), tolerance).error, "x is nan");
   EXPECT_EQ(toGridPose(map, pose(1.25, 0.75, INFINITY), tolerance).error, "theta is inf");
+  EXPECT_EQ(toGridPose(map, pose(1.25, -INFINITY, 0), tolerance).error, "y is -inf");
+  EXPECT_NE(toGridPose(map, pose(1.25, 0.75, -1e20), tolerance).error.find("theta -1e+20 rad is not an angle"),
+            std::string::npos);
+  EXPECT_EQ(toGridPose(map, pose(1e300, 0.75, 0), tolerance).error.rfind("(1e+300, 0.750) is off the map", 0), 0u);
+}
+
+TEST(PoseConversion, OffTheMapEvenWhenTheArithmeticOverflows) {
+  // Origin and pose at opposite ends of the doubles: the offset overflows to inf and 0 * inf is
+  // NaN in one coordinate; no NaN may slip through the bounds check as a cell index.
+  const GridMap map = convert(occupancyGrid(10, 8, 0.5, 0.0, -1.7e308), {});
+  const GridPoseFit fit = toGridPose(map, pose(1.25, 1.7e308, 0), PoseTolerance{0.1, 0.2});
+  EXPECT_NE(fit.error.find("off the map"), std::string::npos) << fit.error;
 }
 
 TEST(FootprintConversion, MetresBecomeCells) {
