@@ -1,5 +1,6 @@
 #include "fleet_planner/ros/fleet_planning_service.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <set>
@@ -34,6 +35,33 @@ std::string poseText(const geometry_msgs::Pose2D& p) {
   char buf[96];
   std::snprintf(buf, sizeof(buf), "(%.3f, %.3f, %.3f)", p.x, p.y, p.theta);
   return buf;
+}
+
+std::string metres(double cells, double resolution) {
+  char buf[32];
+  std::snprintf(buf, sizeof(buf), "%.6g m", cells * resolution);
+  return buf;
+}
+
+/// Why a footprint (cells) cannot stand anywhere on the map: its bounding box, origin included (the
+/// origin is on a map cell), fits the map at no heading. Empty if it might. Checked before the
+/// footprint's cells are computed: that takes time and memory growing with the square of its
+/// reach, and a registry entry of 1e6 m would never finish.
+std::string footprintSizeProblem(const Footprint& f, const GridMap& map) {
+  double min_x = 0, max_x = 0, min_y = 0, max_y = 0;
+  if (f.kind == Footprint::Kind::Circle) {
+    min_x = min_y = -f.radius;
+    max_x = max_y = f.radius;
+  }
+  for (const auto& p : f.outline()) {
+    min_x = std::min(min_x, p.x()), max_x = std::max(max_x, p.x());
+    min_y = std::min(min_y, p.y()), max_y = std::max(max_y, p.y());
+  }
+  const double dx = max_x - min_x, dy = max_y - min_y, w = map.width(), h = map.height();
+  if ((dx <= w && dy <= h) || (dy <= w && dx <= h)) return {};
+  const double res = map.resolution();
+  return "footprint (with its origin) spans " + metres(dx, res) + " x " + metres(dy, res) +
+         ": larger than the map (" + metres(w, res) + " x " + metres(h, res) + ")";
 }
 
 /// One task after its checks.
@@ -239,6 +267,11 @@ void FleetPlanningService::planChecked(const Request& request, const StartLookup
     std::unique_ptr<FootprintCells> cells;
     try {
       tasks[i].footprint = convert(found->second, grid.resolution());
+      const std::string too_large = footprintSizeProblem(tasks[i].footprint, grid);
+      if (!too_large.empty()) {
+        robotError(RobotResultMsg::INVALID_FOOTPRINT, too_large);
+        continue;
+      }
       cells = std::make_unique<FootprintCells>(tasks[i].footprint);
     } catch (const InputError& e) {
       result.status = RobotResultMsg::INVALID_FOOTPRINT;

@@ -3,6 +3,7 @@
 // robot and the problem.
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <cmath>
 #include <future>
 #include <limits>
@@ -304,6 +305,32 @@ TEST(PlanningServiceMap, RejectsABrokenGridAndKeepsThePreviousOne) {
   grid.data.pop_back();
   EXPECT_THROW(service.setMap(grid), InputError);
   EXPECT_EQ(service.plan(swapRequest(), nullptr).response.status, Response::SUCCESS);
+}
+
+TEST_F(PlanningServiceTest, AFootprintLargerThanTheMapIsRejectedAtOnce) {
+  // A registry entry of 1e6 m: computing its cells would never end; the map is 6 m x 3 m.
+  auto fleet = registry();
+  fleet.robots[1] = circleFootprint("amr_2", 1e6);
+  geometry_msgs::Point32 a, b, c;  // a small triangle 1 km from the robot's origin
+  a.x = 1000, a.y = 0, b.x = 1000.2f, b.y = 0, c.x = 1000, c.y = 0.2f;
+  fleet.robots[2].type = fleet_planner::RobotFootprint::POLYGON;
+  fleet.robots[2].points = {a, b, c};
+  service.setFootprints(fleet);
+  const auto t0 = std::chrono::steady_clock::now();
+  const Response r = plan(swapRequest()).response;
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), 2.0);
+  EXPECT_EQ(r.status, Response::INVALID_REQUEST) << r.message;
+  EXPECT_EQ(r.robots[1].status, RobotResultMsg::INVALID_FOOTPRINT) << r.robots[1].message;
+  EXPECT_NE(r.robots[1].message.find("robot 'amr_2': footprint"), std::string::npos) << r.robots[1].message;
+  EXPECT_NE(r.robots[1].message.find("larger than the map (6 m x 3 m)"), std::string::npos) << r.robots[1].message;
+  EXPECT_EQ(r.robots[2].status, RobotResultMsg::INVALID_FOOTPRINT) << r.robots[2].message;
+  // A footprint that only fits turned a quarter is not rejected by size: a 5.5 m x 0.4 m block
+  // on a 6 m x 3 m map fits along x.
+  fleet = registry();
+  fleet.robots[2] = blockFootprint("tug", -0.2, 0.2, -2.75, 2.75);
+  service.setFootprints(fleet);
+  const Response turned = plan(swapRequest()).response;
+  EXPECT_NE(turned.robots[2].status, RobotResultMsg::INVALID_FOOTPRINT) << turned.robots[2].message;
 }
 
 TEST(StatusNames, NameEveryConstant) {
