@@ -54,7 +54,10 @@ GridMap convert(const nav_msgs::OccupancyGrid& grid, const OccupancyPolicy& poli
   MapOrigin origin;
   origin.x = info.origin.position.x;
   origin.y = info.origin.position.y;
-  origin.yaw = std::atan2(2.0 * (q.w * q.z + q.x * q.y), 1.0 - 2.0 * (q.y * q.y + q.z * q.z));
+  // The yaw of q / |q|: this form does not assume a unit quaternion (1 - 2 (y^2 + z^2) does, and
+  // gave (0, 0, 1, 1) a yaw of 116.6 degrees instead of 90). All zeros, as tools that leave the
+  // orientation unset publish it, is atan2(0, 0) = 0: no rotation.
+  origin.yaw = std::atan2(2.0 * (q.w * q.z + q.x * q.y), q.w * q.w + q.x * q.x - q.y * q.y - q.z * q.z);
   return GridMap(static_cast<int>(info.width), static_cast<int>(info.height), std::move(blocked),
                  info.resolution, origin);
 }

@@ -71,6 +71,18 @@ TEST(PoseConversion, RoundTripsEveryHeadingOnARotatedMap) {
   EXPECT_NEAR(c.y, -1.0 + 0.1 * std::sin(yaw) + 0.1 * std::cos(yaw), 1e-6);
 }
 
+TEST(OccupancyConversion, OriginYawFromAnyQuaternionScale) {
+  auto grid = occupancyGrid(10, 8, 0.5, 0.0, 0.0);
+  grid.info.origin.orientation.z = 1.0;  // (0, 0, 1, 1): a quarter turn, not normalised
+  grid.info.origin.orientation.w = 1.0;
+  EXPECT_NEAR(convert(grid, {}).origin().yaw, kPi / 2, 1e-12);
+  grid.info.origin.orientation.z = 0.0;  // all zeros: an orientation left unset
+  grid.info.origin.orientation.w = 0.0;
+  EXPECT_EQ(convert(grid, {}).origin().yaw, 0.0);
+  grid.info.origin.orientation.w = NAN;
+  EXPECT_THROW(convert(grid, {}), InvalidInput);
+}
+
 TEST(PoseConversion, SnapsWithinTolerancesAndExplainsOtherwise) {
   const GridMap map = convert(occupancyGrid(10, 8, 0.5, 0.0, 0.0), {});
   const PoseTolerance tolerance{0.1, 0.2};

@@ -25,6 +25,7 @@ struct OccupancyPolicy {
 
 /// The grid of an OccupancyGrid (row 0 at the origin, as in the message). Throws InvalidInput for
 /// a zero size, a size that does not match the data, or a non-positive/non-finite resolution.
+/// The origin's yaw is that of its orientation normalised (all zeros: no rotation).
 GridMap convert(const nav_msgs::OccupancyGrid& grid, const OccupancyPolicy& policy);
 
 /// A registry footprint (metres) in cells of `resolution` metres. Throws InvalidInput naming the
