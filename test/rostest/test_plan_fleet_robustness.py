@@ -25,6 +25,7 @@ import copy
 import json
 import math
 import os
+import shutil
 import subprocess
 import sys
 import tempfile
@@ -192,6 +193,7 @@ class PlanFleetRobustnessTest(unittest.TestCase):
 
     @classmethod
     def tearDownClass(cls):
+        shutil.rmtree(cls.folder, ignore_errors=True)
         report = FIGURES.report()
         print(report)
         sys.stdout.flush()
