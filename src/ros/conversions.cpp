@@ -13,9 +13,16 @@ constexpr double kPi = 3.14159265358979323846;
 /// Yaw of each heading in the grid frame.
 constexpr double kHeadingYaw[kHeadings] = {0.0, kPi, kPi / 2, -kPi / 2};
 
+/// "%.3f", or "%.6g" for values too large to print that way (1e300 would be cut off).
 std::string metres(double v) {
   char buf[32];
-  std::snprintf(buf, sizeof(buf), "%.3f", v);
+  std::snprintf(buf, sizeof(buf), std::abs(v) < 1e9 ? "%.3f" : "%.6g", v);
+  return buf;
+}
+
+std::string number(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof(buf), "%g", v);
   return buf;
 }
 
@@ -47,7 +54,10 @@ GridMap convert(const nav_msgs::OccupancyGrid& grid, const OccupancyPolicy& poli
   MapOrigin origin;
   origin.x = info.origin.position.x;
   origin.y = info.origin.position.y;
-  origin.yaw = std::atan2(2.0 * (q.w * q.z + q.x * q.y), 1.0 - 2.0 * (q.y * q.y + q.z * q.z));
+  // The yaw of q / |q|: this form does not assume a unit quaternion (1 - 2 (y^2 + z^2) does, and
+  // gave (0, 0, 1, 1) a yaw of 116.6 degrees instead of 90). All zeros, as tools that leave the
+  // orientation unset publish it, is atan2(0, 0) = 0: no rotation.
+  origin.yaw = std::atan2(2.0 * (q.w * q.z + q.x * q.y), q.w * q.w + q.x * q.x - q.y * q.y - q.z * q.z);
   return GridMap(static_cast<int>(info.width), static_cast<int>(info.height), std::move(blocked),
                  info.resolution, origin);
 }
@@ -78,11 +88,20 @@ Footprint convert(const fleet_planner::RobotFootprint& msg, double resolution) {
   return f;
 }
 
+std::string poseValueProblem(const geometry_msgs::Pose2D& pose) {
+  if (!std::isfinite(pose.x)) return "x is " + number(pose.x);
+  if (!std::isfinite(pose.y)) return "y is " + number(pose.y);
+  if (!std::isfinite(pose.theta)) return "theta is " + number(pose.theta);
+  if (std::abs(pose.theta) > kMaxAbsYaw) {
+    return "theta " + number(pose.theta) + " rad is not an angle (|theta| must be at most " + number(kMaxAbsYaw) +
+           " rad)";
+  }
+  return {};
+}
+
 GridPoseFit toGridPose(const GridMap& map, const geometry_msgs::Pose2D& pose, const PoseTolerance& tolerance) {
   GridPoseFit fit;
-  if (!std::isfinite(pose.x)) fit.error = "x is " + std::to_string(pose.x);
-  else if (!std::isfinite(pose.y)) fit.error = "y is " + std::to_string(pose.y);
-  else if (!std::isfinite(pose.theta)) fit.error = "theta is " + std::to_string(pose.theta);
+  fit.error = poseValueProblem(pose);
   if (!fit.ok()) return fit;
 
   const MapOrigin& o = map.origin();
@@ -91,7 +110,7 @@ GridPoseFit toGridPose(const GridMap& map, const geometry_msgs::Pose2D& pose, co
   const double gx = (c * dx + s * dy) / map.resolution();  // in cells, grid frame
   const double gy = (-s * dx + c * dy) / map.resolution();
   const std::string at = "(" + metres(pose.x) + ", " + metres(pose.y) + ")";
-  if (gx < 0 || gy < 0 || gx >= map.width() || gy >= map.height()) {
+  if (!(gx >= 0 && gy >= 0 && gx < map.width() && gy < map.height())) {  // NaN-proof
     fit.error = at + " is off the map (" + std::to_string(map.width()) + " x " + std::to_string(map.height()) +
                 " cells of " + metres(map.resolution()) + " m)";
     return fit;

@@ -1,7 +1,9 @@
 #include "fleet_planner/ros/fleet_planning_service.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <set>
 
 #include "fleet_planner/core/errors.h"
@@ -31,9 +33,39 @@ std::string number(double v) {
 std::string quoted(const std::string& id) { return "robot '" + id + "'"; }
 
 std::string poseText(const geometry_msgs::Pose2D& p) {
-  char buf[96];
-  std::snprintf(buf, sizeof(buf), "(%.3f, %.3f, %.3f)", p.x, p.y, p.theta);
+  char buf[128];
+  std::snprintf(buf, sizeof(buf), "(%.6g, %.6g, %.6g)", p.x, p.y, p.theta);
+  if (std::abs(p.x) < 1e9 && std::abs(p.y) < 1e9 && std::abs(p.theta) < 1e9) {
+    std::snprintf(buf, sizeof(buf), "(%.3f, %.3f, %.3f)", p.x, p.y, p.theta);
+  }
   return buf;
+}
+
+std::string metres(double cells, double resolution) {
+  char buf[32];
+  std::snprintf(buf, sizeof(buf), "%.6g m", cells * resolution);
+  return buf;
+}
+
+/// Why a footprint (cells) cannot stand anywhere on the map: its bounding box, origin included (the
+/// origin is on a map cell), fits the map at no heading. Empty if it might. Checked before the
+/// footprint's cells are computed: that takes time and memory growing with the square of its
+/// reach, and a registry entry of 1e6 m would never finish.
+std::string footprintSizeProblem(const Footprint& f, const GridMap& map) {
+  double min_x = 0, max_x = 0, min_y = 0, max_y = 0;
+  if (f.kind == Footprint::Kind::Circle) {
+    min_x = min_y = -f.radius;
+    max_x = max_y = f.radius;
+  }
+  for (const auto& p : f.outline()) {
+    min_x = std::min(min_x, p.x()), max_x = std::max(max_x, p.x());
+    min_y = std::min(min_y, p.y()), max_y = std::max(max_y, p.y());
+  }
+  const double dx = max_x - min_x, dy = max_y - min_y, w = map.width(), h = map.height();
+  if ((dx <= w && dy <= h) || (dy <= w && dx <= h)) return {};
+  const double res = map.resolution();
+  return "footprint (with its origin) spans " + metres(dx, res) + " x " + metres(dy, res) +
+         ": larger than the map (" + metres(w, res) + " x " + metres(h, res) + ")";
 }
 
 /// One task after its checks.
@@ -144,13 +176,12 @@ std::shared_ptr<const FleetGraphs> FleetPlanningService::graphsFor(const MapSnap
 }
 
 PlanCall FleetPlanningService::plan(const Request& request, const StartLookup& lookup,
-                                    const std::atomic<bool>* cancel) {
+                                    const std::atomic<bool>* cancel, Clock::time_point received) {
   PlanCall call;
   call.response.statistics.soc = -1;
   call.response.statistics.makespan = -1;
-  const auto t0 = Clock::now();
   try {
-    planChecked(request, lookup, cancel, call);
+    planChecked(request, lookup, cancel, received, call);
   } catch (const InputError& e) {
     fail(call, Response::INVALID_REQUEST, e.what());
   } catch (const std::exception& e) {
@@ -159,50 +190,104 @@ PlanCall FleetPlanningService::plan(const Request& request, const StartLookup& l
     fail(call, Response::INTERNAL_ERROR, "internal error: unknown exception");
   }
   if (call.response.status != Response::SUCCESS) call.response.timelines.clear();
-  call.response.statistics.total_time = since(t0);
+  call.response.statistics.total_time = since(received);
   return call;
 }
 
+std::optional<Response> FleetPlanningService::checkRequest(const Request& request) const {
+  PlanCall call;
+  call.response.statistics.soc = -1;
+  call.response.statistics.makespan = -1;
+  double time_limit = 0;
+  std::string backend;
+  try {
+    if (checkFields(request, call, time_limit, backend)) return std::nullopt;
+  } catch (const std::exception& e) {
+    fail(call, Response::INTERNAL_ERROR, std::string("internal error: ") + e.what());
+  }
+  call.response.statistics.robots = static_cast<std::uint32_t>(request.tasks.size());
+  return call.response;
+}
+
+double FleetPlanningService::timeLimit(const Request& request) const {
+  return request.time_limit == -1.0 ? config_.time_limit : request.time_limit;
+}
+
+bool FleetPlanningService::checkFields(const Request& request, PlanCall& call, double& time_limit,
+                                       std::string& backend) const {
+  const int n = static_cast<int>(request.tasks.size());
+  auto reject = [&](std::uint8_t status, const std::string& message) {
+    fail(call, status, message);
+    return false;
+  };
+  if (n == 0) return reject(Response::INVALID_REQUEST, "tasks is empty: give one task per robot");
+  std::map<std::string, int> task_of;
+  for (int i = 0; i < n; ++i) {
+    const std::string& id = request.tasks[i].robot_id;
+    if (id.empty()) return reject(Response::INVALID_REQUEST, "tasks[" + std::to_string(i) + "]: robot_id is empty");
+    const auto [it, fresh] = task_of.emplace(id, i);
+    if (!fresh) {
+      return reject(Response::INVALID_REQUEST, quoted(id) + " has two tasks (tasks[" + std::to_string(it->second) +
+                                                   "] and tasks[" + std::to_string(i) + "])");
+    }
+  }
+  time_limit = timeLimit(request);
+  if (request.time_limit != -1.0 && (!(request.time_limit > 0) || !std::isfinite(request.time_limit))) {
+    return reject(Response::INVALID_REQUEST,
+                  "time_limit must be > 0 seconds, or -1 for the planner's default (" + number(config_.time_limit) +
+                      " s); got " + number(request.time_limit));
+  }
+  if (time_limit > config_.max_time_limit) {
+    return reject(Response::INVALID_REQUEST, "time_limit " + number(request.time_limit) +
+                                                 " s is above the planner's max_time_limit (" +
+                                                 number(config_.max_time_limit) + " s)");
+  }
+  if (request.decomposition > Request::DECOMPOSITION_RAW) {
+    return reject(Response::INVALID_REQUEST,
+                  "decomposition must be DECOMPOSITION_DEFAULT (0), _LAYERED (1) or _RAW (2); got " +
+                      std::to_string(request.decomposition));
+  }
+  if (request.steps > 4) {
+    return reject(Response::INVALID_REQUEST,
+                  "steps must be 1..4, or 0 for the planner's default; got " + std::to_string(request.steps));
+  }
+  const std::string wanted = request.backend.empty() ? config_.backend : request.backend;
+  std::string why_not;
+  backend = resolveBackendName(wanted, &why_not);
+  if (backend.empty()) return reject(Response::UNKNOWN_BACKEND, why_not);
+
+  // Pose values no map can place (NaN, inf, a yaw that is noise): per robot, as the map checks.
+  auto& robots = call.response.robots;
+  robots.assign(n, fleet_planner::RobotResult());
+  for (int i = 0; i < n; ++i) {
+    const auto& task = request.tasks[i];
+    robots[i].robot_id = task.robot_id;
+    robots[i].status = RobotResultMsg::OK;
+    std::string problem;
+    if (!task.start_from_tf && !(problem = poseValueProblem(task.start)).empty()) {
+      robots[i].status = RobotResultMsg::INVALID_START;
+      robots[i].message = quoted(task.robot_id) + ": start " + problem;
+    } else if (!(problem = poseValueProblem(task.goal)).empty()) {
+      robots[i].status = RobotResultMsg::INVALID_GOAL;
+      robots[i].message = quoted(task.robot_id) + ": goal " + problem;
+    }
+  }
+  if (failOnRobotErrors(call)) return false;
+  robots.clear();
+  return true;
+}
+
 void FleetPlanningService::planChecked(const Request& request, const StartLookup& lookup,
-                                       const std::atomic<bool>* cancel, PlanCall& call) {
-  const auto t0 = Clock::now();
+                                       const std::atomic<bool>* cancel, Clock::time_point received, PlanCall& call) {
+  const auto t0 = received;
   Response& res = call.response;
   const int n = static_cast<int>(request.tasks.size());
   res.statistics.robots = n;
 
   // The request's own fields.
-  if (n == 0) return fail(call, Response::INVALID_REQUEST, "tasks is empty: give one task per robot");
-  std::map<std::string, int> task_of;
-  for (int i = 0; i < n; ++i) {
-    const std::string& id = request.tasks[i].robot_id;
-    if (id.empty()) return fail(call, Response::INVALID_REQUEST, "tasks[" + std::to_string(i) + "]: robot_id is empty");
-    const auto [it, fresh] = task_of.emplace(id, i);
-    if (!fresh) {
-      return fail(call, Response::INVALID_REQUEST, quoted(id) + " has two tasks (tasks[" + std::to_string(it->second) +
-                                                       "] and tasks[" + std::to_string(i) + "])");
-    }
-  }
-  double time_limit = request.time_limit;
-  if (time_limit == -1.0) {
-    time_limit = config_.time_limit;
-  } else if (!(time_limit > 0) || !std::isfinite(time_limit)) {
-    return fail(call, Response::INVALID_REQUEST,
-                "time_limit must be > 0 seconds, or -1 for the planner's default (" + number(config_.time_limit) +
-                    " s); got " + number(request.time_limit));
-  }
-  if (request.decomposition > Request::DECOMPOSITION_RAW) {
-    return fail(call, Response::INVALID_REQUEST,
-                "decomposition must be DECOMPOSITION_DEFAULT (0), _LAYERED (1) or _RAW (2); got " +
-                    std::to_string(request.decomposition));
-  }
-  if (request.steps > 4) {
-    return fail(call, Response::INVALID_REQUEST,
-                "steps must be 1..4, or 0 for the planner's default; got " + std::to_string(request.steps));
-  }
-  const std::string wanted = request.backend.empty() ? config_.backend : request.backend;
-  std::string why_not;
-  const std::string backend = resolveBackendName(wanted, &why_not);
-  if (backend.empty()) return fail(call, Response::UNKNOWN_BACKEND, why_not);
+  double time_limit = 0;
+  std::string backend;
+  if (!checkFields(request, call, time_limit, backend)) return;
 
   std::shared_ptr<const MapSnapshot> map;
   std::map<std::string, fleet_planner::RobotFootprint> registry;
@@ -239,6 +324,11 @@ void FleetPlanningService::planChecked(const Request& request, const StartLookup
     std::unique_ptr<FootprintCells> cells;
     try {
       tasks[i].footprint = convert(found->second, grid.resolution());
+      const std::string too_large = footprintSizeProblem(tasks[i].footprint, grid);
+      if (!too_large.empty()) {
+        robotError(RobotResultMsg::INVALID_FOOTPRINT, too_large);
+        continue;
+      }
       cells = std::make_unique<FootprintCells>(tasks[i].footprint);
     } catch (const InputError& e) {
       result.status = RobotResultMsg::INVALID_FOOTPRINT;

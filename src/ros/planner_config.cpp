@@ -22,6 +22,12 @@ class Checker {
   void nonNegative(const char* name, double v) {
     if (!(v >= 0) || !std::isfinite(v)) add(name, "must be >= 0 and finite", v);
   }
+  /// v <= limit (the parameter `limit_name`); only checked when both are usable numbers.
+  void atMost(const char* name, double v, const char* limit_name, double limit) {
+    if (v > 0 && std::isfinite(v) && limit > 0 && std::isfinite(limit) && v > limit) {
+      add(name, "must be <= " + std::string(limit_name) + " (" + show(limit) + ")", v);
+    }
+  }
   void range(const char* name, int v, int lo, int hi) {
     if (v < lo || v > hi) add(name, "must be in " + show(lo) + ".." + show(hi), v);
   }
@@ -51,6 +57,8 @@ std::vector<std::string> checkPlannerConfig(const PlannerConfig& c) {
   Checker check;
   check.nonEmpty("backend", c.backend);
   check.positive("time_limit", c.time_limit);
+  check.positive("max_time_limit", c.max_time_limit);
+  check.atMost("time_limit", c.time_limit, "max_time_limit", c.max_time_limit);
   check.range("decomposition_steps", c.decomposition_steps, 1, 4);
   check.range("threads", c.threads, 1, 64);
   check.oneOf("busy_policy", c.busy_policy, {"reject", "queue"});

@@ -59,11 +59,12 @@ class Reader {
 
 namespace {
 
-const char* const kParameters[] = {"backend",        "time_limit",         "decomposition",     "decomposition_steps",
-                                   "threads",        "busy_policy",        "occupied_threshold", "unknown_policy",
-                                   "position_tolerance", "heading_tolerance", "seconds_per_step", "map_frame",
-                                   "base_frame",     "tf_timeout",         "playback",          "planned_frame",
-                                   "playback_rate",  "playback_loop"};
+const char* const kParameters[] = {
+    "backend",          "time_limit",         "max_time_limit",    "decomposition",
+    "decomposition_steps", "threads",         "busy_policy",       "occupied_threshold",
+    "unknown_policy",   "position_tolerance", "heading_tolerance", "seconds_per_step",
+    "map_frame",        "base_frame",         "tf_timeout",        "playback",
+    "planned_frame",    "playback_rate",      "playback_loop"};
 
 }  // namespace
 
@@ -86,6 +87,7 @@ PlannerConfig loadPlannerConfig(const ros::NodeHandle& nh) {
   Reader r(nh);
   r.read("backend", c.backend);
   r.read("time_limit", c.time_limit);
+  r.read("max_time_limit", c.max_time_limit);
   r.read("decomposition", c.decomposition);
   r.read("decomposition_steps", c.decomposition_steps);
   r.read("threads", c.threads);

@@ -1,5 +1,8 @@
 #include "fleet_planner/ros/planner_node.h"
 
+#include <chrono>
+#include <cstdio>
+
 #include <tf2/LinearMath/Quaternion.h>
 #include <tf2/utils.h>
 #include <visualization_msgs/MarkerArray.h>
@@ -75,25 +78,50 @@ bool PlannerNode::lookupStart(const std::string& robot_id, geometry_msgs::Pose2D
 }
 
 bool PlannerNode::onPlanFleet(fleet_planner::PlanFleet::Request& request, fleet_planner::PlanFleet::Response& response) {
+  using Response = fleet_planner::PlanFleet::Response;
+  const auto received = FleetPlanningService::Clock::now();
   try {
-    std::unique_lock<std::mutex> lock(plan_mutex_, std::defer_lock);
+    if (auto bad = service_.checkRequest(request)) {  // answered at once, even while busy
+      response = std::move(*bad);
+      ROS_INFO("fleet_planner: %zu robots: %s: %s", request.tasks.size(), fleetStatusName(response.status).c_str(),
+               response.message.c_str());
+      return true;
+    }
+    std::unique_lock<std::timed_mutex> lock(plan_mutex_, std::defer_lock);
     if (service_.config().busy_policy == "queue") {
-      lock.lock();
+      // Wait for the running call(s), but no longer than this call's own time limit.
+      const double limit = service_.timeLimit(request);
+      const auto until = received + std::chrono::duration_cast<FleetPlanningService::Clock::duration>(
+                                        std::chrono::duration<double>(limit));
+      if (!lock.try_lock_until(until)) {
+        char text[160];
+        std::snprintf(text, sizeof(text),
+                      "time_limit (%g s) passed while waiting for other PlanFleet calls to finish (busy_policy: queue)",
+                      limit);
+        response.status = Response::TIMEOUT;
+        response.message = text;
+        response.statistics.robots = static_cast<std::uint32_t>(request.tasks.size());
+        response.statistics.soc = response.statistics.makespan = -1;
+        response.statistics.total_time =
+            std::chrono::duration<double>(FleetPlanningService::Clock::now() - received).count();
+        ROS_WARN("fleet_planner: %s", response.message.c_str());
+        return true;
+      }
     } else if (!lock.try_lock()) {
-      response.status = fleet_planner::PlanFleet::Response::BUSY;
+      response.status = Response::BUSY;
       response.message = "another PlanFleet call is planning (busy_policy: reject); call again later";
       return true;
     }
     const PlanCall call = service_.plan(
         request, [this](const std::string& id, geometry_msgs::Pose2D& p, std::string& e) { return lookupStart(id, p, e); },
-        &shutting_down_);
+        &shutting_down_, received);
     response = call.response;
     const auto& r = call.response;
     ROS_INFO("fleet_planner: %zu robots: %s: %s (%.2f s)", request.tasks.size(), fleetStatusName(r.status).c_str(),
              r.message.c_str(), r.statistics.total_time);
     publish(call);
   } catch (const std::exception& e) {
-    response.status = fleet_planner::PlanFleet::Response::INTERNAL_ERROR;
+    response.status = Response::INTERNAL_ERROR;
     response.message = std::string("internal error: ") + e.what();
     ROS_ERROR("fleet_planner: %s", response.message.c_str());
   }

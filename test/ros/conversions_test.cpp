@@ -71,6 +71,18 @@ TEST(PoseConversion, RoundTripsEveryHeadingOnARotatedMap) {
   EXPECT_NEAR(c.y, -1.0 + 0.1 * std::sin(yaw) + 0.1 * std::cos(yaw), 1e-6);
 }
 
+TEST(OccupancyConversion, OriginYawFromAnyQuaternionScale) {
+  auto grid = occupancyGrid(10, 8, 0.5, 0.0, 0.0);
+  grid.info.origin.orientation.z = 1.0;  // (0, 0, 1, 1): a quarter turn, not normalised
+  grid.info.origin.orientation.w = 1.0;
+  EXPECT_NEAR(convert(grid, {}).origin().yaw, kPi / 2, 1e-12);
+  grid.info.origin.orientation.z = 0.0;  // all zeros: an orientation left unset
+  grid.info.origin.orientation.w = 0.0;
+  EXPECT_EQ(convert(grid, {}).origin().yaw, 0.0);
+  grid.info.origin.orientation.w = NAN;
+  EXPECT_THROW(convert(grid, {}), InvalidInput);
+}
+
 TEST(PoseConversion, SnapsWithinTolerancesAndExplainsOtherwise) {
   const GridMap map = convert(occupancyGrid(10, 8, 0.5, 0.0, 0.0), {});
   const PoseTolerance tolerance{0.1, 0.2};
@@ -87,6 +99,18 @@ TEST(PoseConversion, SnapsWithinTolerancesAndExplainsOtherwise) {
   EXPECT_NE(toGridPose(map, pose(-0.01, 0.75, 0), tolerance).error.find("off the map"), std::string::npos);
   EXPECT_EQ(toGridPose(map, pose(NAN, 0.75, 0), tolerance).error, "x is nan");
   EXPECT_EQ(toGridPose(map, pose(1.25, 0.75, INFINITY), tolerance).error, "theta is inf");
+  EXPECT_EQ(toGridPose(map, pose(1.25, -INFINITY, 0), tolerance).error, "y is -inf");
+  EXPECT_NE(toGridPose(map, pose(1.25, 0.75, -1e20), tolerance).error.find("theta -1e+20 rad is not an angle"),
+            std::string::npos);
+  EXPECT_EQ(toGridPose(map, pose(1e300, 0.75, 0), tolerance).error.rfind("(1e+300, 0.750) is off the map", 0), 0u);
+}
+
+TEST(PoseConversion, OffTheMapEvenWhenTheArithmeticOverflows) {
+  // Origin and pose at opposite ends of the doubles: the offset overflows to inf and 0 * inf is
+  // NaN in one coordinate; no NaN may slip through the bounds check as a cell index.
+  const GridMap map = convert(occupancyGrid(10, 8, 0.5, 0.0, -1.7e308), {});
+  const GridPoseFit fit = toGridPose(map, pose(1.25, 1.7e308, 0), PoseTolerance{0.1, 0.2});
+  EXPECT_NE(fit.error.find("off the map"), std::string::npos) << fit.error;
 }
 
 TEST(FootprintConversion, MetresBecomeCells) {

@@ -3,7 +3,9 @@
 // robot and the problem.
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <cmath>
+#include <functional>
 #include <future>
 #include <limits>
 
@@ -304,6 +306,150 @@ TEST(PlanningServiceMap, RejectsABrokenGridAndKeepsThePreviousOne) {
   grid.data.pop_back();
   EXPECT_THROW(service.setMap(grid), InputError);
   EXPECT_EQ(service.plan(swapRequest(), nullptr).response.status, Response::SUCCESS);
+}
+
+// --- Hostile requests: each gets its own status and a message naming the robot or the field. ---
+
+TEST_F(PlanningServiceTest, EveryNonFinitePoseValueIsNamedPerRobotAndField) {
+  const double bad_values[] = {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity(),
+                               -std::numeric_limits<double>::infinity()};
+  for (const bool goal : {false, true}) {
+    for (const char* field : {"x", "y", "theta"}) {
+      for (const double v : bad_values) {
+        Request request = swapRequest();
+        auto& pose = goal ? request.tasks[1].goal : request.tasks[1].start;
+        (field[0] == 'x' ? pose.x : field[0] == 'y' ? pose.y : pose.theta) = v;
+        const std::string what = std::string(goal ? "goal " : "start ") + field + " is ";
+        SCOPED_TRACE(what + std::to_string(v));
+        const Response r = plan(request).response;
+        EXPECT_EQ(r.status, goal ? Response::INVALID_GOAL : Response::INVALID_START) << r.message;
+        EXPECT_NE(r.message.find("robot 'amr_2': " + what), std::string::npos) << r.message;
+        ASSERT_EQ(r.robots.size(), 3u);
+        EXPECT_EQ(r.robots[1].status, goal ? RobotResultMsg::INVALID_GOAL : RobotResultMsg::INVALID_START);
+        EXPECT_EQ(r.robots[0].status, RobotResultMsg::NOT_PLANNED);
+        // The same answer without the map: checkRequest() needs neither map nor registry.
+        const auto early = service.checkRequest(request);
+        ASSERT_TRUE(early.has_value());
+        EXPECT_EQ(early->status, r.status);
+        EXPECT_EQ(early->message, r.message);
+      }
+    }
+  }
+}
+
+TEST_F(PlanningServiceTest, AYawTooLargeToBeAnAngleIsRejected) {
+  Request request = swapRequest();
+  request.tasks[0].goal.theta = 1e20;  // matches some grid heading by chance: not a usable angle
+  const Response r = plan(request).response;
+  EXPECT_EQ(r.status, Response::INVALID_GOAL);
+  EXPECT_NE(r.message.find("robot 'amr_1': goal theta 1e+20 rad is not an angle"), std::string::npos) << r.message;
+  request = swapRequest();
+  request.tasks[0].start.theta = 4 * kPi;  // a wrapped-around yaw is fine
+  EXPECT_EQ(plan(request).response.status, Response::SUCCESS);
+}
+
+TEST_F(PlanningServiceTest, PosesFarOffTheMapAreNamedWithReadableNumbers) {
+  for (const double far : {1e6, -1e6, 1e300}) {
+    Request request = swapRequest();
+    request.tasks[2].goal.y = far;
+    const Response r = plan(request).response;
+    EXPECT_EQ(r.status, Response::INVALID_GOAL) << r.message;
+    EXPECT_NE(r.message.find("robot 'tug': goal"), std::string::npos) << r.message;
+    EXPECT_NE(r.message.find("off the map"), std::string::npos) << r.message;
+  }
+  Request request = swapRequest();
+  request.tasks[2].start.x = -1e300;
+  const Response r = plan(request).response;
+  EXPECT_NE(r.message.find("(-1e+300, "), std::string::npos) << "not cut off: " << r.message;
+}
+
+TEST_F(PlanningServiceTest, TimeLimitAboveMaxTimeLimitIsAnInvalidRequest) {
+  for (const double limit : {1e12, PlannerConfig{}.max_time_limit + 1}) {
+    Request request = swapRequest();
+    request.time_limit = limit;
+    const Response r = plan(request).response;
+    EXPECT_EQ(r.status, Response::INVALID_REQUEST) << r.message;
+    EXPECT_NE(r.message.find("max_time_limit (60 s)"), std::string::npos) << r.message;
+  }
+  for (const double limit : {std::numeric_limits<double>::infinity(), std::numeric_limits<double>::quiet_NaN(), -2.0}) {
+    Request request = swapRequest();
+    request.time_limit = limit;
+    const Response r = plan(request).response;
+    EXPECT_EQ(r.status, Response::INVALID_REQUEST) << r.message;
+    EXPECT_NE(r.message.find("time_limit must be > 0"), std::string::npos) << r.message;
+  }
+  Request request = swapRequest();
+  request.time_limit = PlannerConfig{}.max_time_limit;  // the maximum itself is fine
+  expectValidPlan(request, plan(request).response);
+}
+
+TEST(PlanningServiceChecks, BadRequestsAreAnsweredWithoutMapOrRegistry) {
+  // checkRequest() is what the node answers at once, even while another call plans.
+  const FleetPlanningService service{PlannerConfig{}};
+  Request request = swapRequest();
+  EXPECT_FALSE(service.checkRequest(request).has_value());
+  EXPECT_DOUBLE_EQ(service.timeLimit(request), 10.0);
+  request.time_limit = -1;
+  EXPECT_DOUBLE_EQ(service.timeLimit(request), PlannerConfig{}.time_limit);
+
+  const std::vector<std::pair<std::function<void(Request&)>, std::string>> cases = {
+      {[](Request& r) { r.tasks.clear(); }, "tasks is empty"},
+      {[](Request& r) { r.tasks[1].robot_id = ""; }, "tasks[1]: robot_id is empty"},
+      {[](Request& r) { r.tasks[2].robot_id = "amr_1"; }, "robot 'amr_1' has two tasks (tasks[0] and tasks[2])"},
+      {[](Request& r) { r.time_limit = 1e12; }, "max_time_limit"},
+      {[](Request& r) { r.backend = "teleport"; }, "no backend named 'teleport'"},
+      {[](Request& r) { r.tasks[0].goal.x = NAN; }, "robot 'amr_1': goal x is nan"},
+  };
+  for (const auto& [spoil, words] : cases) {
+    request = swapRequest();
+    spoil(request);
+    const auto answer = service.checkRequest(request);
+    ASSERT_TRUE(answer.has_value()) << words;
+    EXPECT_NE(answer->status, Response::SUCCESS);
+    EXPECT_NE(answer->message.find(words), std::string::npos) << answer->message;
+  }
+  // A start from TF is not checked: its pose fields are ignored.
+  request = swapRequest();
+  request.tasks[0].start_from_tf = true;
+  request.tasks[0].start.x = NAN;
+  EXPECT_FALSE(service.checkRequest(request).has_value());
+}
+
+TEST_F(PlanningServiceTest, AFootprintLargerThanTheMapIsRejectedAtOnce) {
+  // A registry entry of 1e6 m: computing its cells would never end; the map is 6 m x 3 m.
+  auto fleet = registry();
+  fleet.robots[1] = circleFootprint("amr_2", 1e6);
+  geometry_msgs::Point32 a, b, c;  // a small triangle 1 km from the robot's origin
+  a.x = 1000, a.y = 0, b.x = 1000.2f, b.y = 0, c.x = 1000, c.y = 0.2f;
+  fleet.robots[2].type = fleet_planner::RobotFootprint::POLYGON;
+  fleet.robots[2].points = {a, b, c};
+  service.setFootprints(fleet);
+  const auto t0 = std::chrono::steady_clock::now();
+  const Response r = plan(swapRequest()).response;
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), 2.0);
+  EXPECT_EQ(r.status, Response::INVALID_REQUEST) << r.message;
+  EXPECT_EQ(r.robots[1].status, RobotResultMsg::INVALID_FOOTPRINT) << r.robots[1].message;
+  EXPECT_NE(r.robots[1].message.find("robot 'amr_2': footprint"), std::string::npos) << r.robots[1].message;
+  EXPECT_NE(r.robots[1].message.find("larger than the map (6 m x 3 m)"), std::string::npos) << r.robots[1].message;
+  EXPECT_EQ(r.robots[2].status, RobotResultMsg::INVALID_FOOTPRINT) << r.robots[2].message;
+  // A footprint that only fits turned a quarter is not rejected by size: a 5.5 m x 0.4 m block
+  // on a 6 m x 3 m map fits along x.
+  fleet = registry();
+  fleet.robots[2] = blockFootprint("tug", -0.2, 0.2, -2.75, 2.75);
+  service.setFootprints(fleet);
+  const Response turned = plan(swapRequest()).response;
+  EXPECT_NE(turned.robots[2].status, RobotResultMsg::INVALID_FOOTPRINT) << turned.robots[2].message;
+}
+
+TEST_F(PlanningServiceTest, TimeSpentWaitingCountsAgainstTheTimeLimit) {
+  // The node passes the time it took the call up: a call that waited its whole time limit for
+  // the planner gets TIMEOUT, not a fresh time limit.
+  Request request = swapRequest();
+  request.time_limit = 5.0;
+  const auto received = std::chrono::steady_clock::now() - std::chrono::seconds(6);
+  const Response r = service.plan(request, nullptr, nullptr, received).response;
+  EXPECT_EQ(r.status, Response::TIMEOUT) << r.message;
+  EXPECT_GE(r.statistics.total_time, 6.0);
 }
 
 TEST(StatusNames, NameEveryConstant) {

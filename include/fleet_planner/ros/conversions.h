@@ -25,6 +25,7 @@ struct OccupancyPolicy {
 
 /// The grid of an OccupancyGrid (row 0 at the origin, as in the message). Throws InvalidInput for
 /// a zero size, a size that does not match the data, or a non-positive/non-finite resolution.
+/// The origin's yaw is that of its orientation normalised (all zeros: no rotation).
 GridMap convert(const nav_msgs::OccupancyGrid& grid, const OccupancyPolicy& policy);
 
 /// A registry footprint (metres) in cells of `resolution` metres. Throws InvalidInput naming the
@@ -44,8 +45,17 @@ struct GridPoseFit {
   bool ok() const { return error.empty(); }
 };
 
-/// The grid state nearest to `pose`; an error if a value is not finite, the point is off the map,
-/// or it is farther than the tolerances from that state.
+/// Largest |theta| of a pose, radians. Beyond it a yaw is noise rather than an angle (a client's
+/// bug): at 1e20 rad neighbouring doubles are 16384 rad apart, so it would match a grid heading
+/// by chance.
+constexpr double kMaxAbsYaw = 1e6;
+
+/// Why a pose's numbers cannot be a pose, whatever the map: "x is nan", "theta is inf",
+/// "theta 1e+20 rad is not an angle (|theta| must be at most 1e+06 rad)"; empty if usable.
+std::string poseValueProblem(const geometry_msgs::Pose2D& pose);
+
+/// The grid state nearest to `pose`; an error if poseValueProblem() finds one, the point is off
+/// the map, or it is farther than the tolerances from that state.
 GridPoseFit toGridPose(const GridMap& map, const geometry_msgs::Pose2D& pose, const PoseTolerance& tolerance);
 
 /// The map-frame pose of a grid state (the centre of its cell, its heading's yaw).

@@ -7,11 +7,13 @@
 /// poses off the map or in collision, timeouts and internal errors alike (rule: a service call
 /// always answers).
 #include <atomic>
+#include <chrono>
 #include <cstdint>
 #include <functional>
 #include <map>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -58,10 +60,23 @@ class FleetPlanningService {
   void setFootprints(const fleet_planner::FleetFootprints& fleet);
   bool hasMap() const;
 
+  using Clock = std::chrono::steady_clock;
+
+  /// The checks that need neither the map nor the registry: the task list, robot ids, pose
+  /// values (NaN, inf, |theta| > kMaxAbsYaw), time_limit (<= max_time_limit), decomposition,
+  /// steps, backend. Returns the answer to a bad request (as plan() would give it), nothing for a
+  /// good one. Cheap and lock-free: the node answers a bad request at once, even while another
+  /// call plans. Never throws.
+  std::optional<fleet_planner::PlanFleet::Response> checkRequest(const fleet_planner::PlanFleet::Request& request) const;
+  /// Seconds the request may take: its time_limit, or the configured one for -1. Meaningful once
+  /// checkRequest() passed.
+  double timeLimit(const fleet_planner::PlanFleet::Request& request) const;
+
   /// Plans one request. Never throws. `lookup` serves tasks with start_from_tf; `cancel` (may be
-  /// null) stops the planning early (answered TIMEOUT, "cancelled").
+  /// null) stops the planning early (answered TIMEOUT, "cancelled"). The time limit counts from
+  /// `received` (the node passes the time it took the call up, so waiting for the planner counts).
   PlanCall plan(const fleet_planner::PlanFleet::Request& request, const StartLookup& lookup,
-                const std::atomic<bool>* cancel = nullptr);
+                const std::atomic<bool>* cancel = nullptr, Clock::time_point received = Clock::now());
 
   const PlannerConfig& config() const { return config_; }
 
@@ -74,8 +89,12 @@ class FleetPlanningService {
   /// The fleet's state graphs; reused when the map and the footprints are those of the last call.
   std::shared_ptr<const FleetGraphs> graphsFor(const MapSnapshot& map, const std::vector<Footprint>& footprints,
                                                bool& cached);
+  /// checkRequest()'s checks: false with the answer in `call` for a bad request; otherwise the
+  /// resolved time limit and backend name.
+  bool checkFields(const fleet_planner::PlanFleet::Request& request, PlanCall& call, double& time_limit,
+                   std::string& backend) const;
   void planChecked(const fleet_planner::PlanFleet::Request& request, const StartLookup& lookup,
-                   const std::atomic<bool>* cancel, PlanCall& call);
+                   const std::atomic<bool>* cancel, Clock::time_point received, PlanCall& call);
 
   const PlannerConfig config_;
   mutable std::mutex mutex_;  ///< guards map_ and footprints_

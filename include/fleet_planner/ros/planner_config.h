@@ -15,6 +15,9 @@ struct PlannerConfig {
   // Planning.
   std::string backend = "la_lacam";  ///< default backend: "la_cbs", "la_lacam" or any plugin name
   double time_limit = 10.0;          ///< default seconds per call, graphs included
+  /// Largest time_limit a request may ask for (a larger one, or inf, is INVALID_REQUEST): no
+  /// call can hold the planner for longer. time_limit must not exceed it.
+  double max_time_limit = 60.0;
   bool decomposition = true;         ///< default: Layered LA-MAPF (false: raw)
   int decomposition_steps = 4;       ///< default last decomposition step, 1..4
   int threads = 2;                   ///< threads for state and relation graphs

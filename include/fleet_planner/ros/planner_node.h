@@ -5,9 +5,10 @@
 ///
 /// Threads: PlanFleet calls have their own callback queue and two threads, so map, registry and
 /// playback callbacks (on the node's spinner) never wait for a plan, and a map update is taken
-/// while a call plans (the running call keeps its snapshot). One call plans at a time; a second
-/// one is answered BUSY (busy_policy: reject) or waits its turn (busy_policy: queue). No
-/// exception leaves a callback.
+/// while a call plans (the running call keeps its snapshot). A bad request is answered at once,
+/// busy or not. One call plans at a time; a second one is answered BUSY (busy_policy: reject) or
+/// waits its turn (busy_policy: queue), at most its time limit: waiting counts against it, and a
+/// call whose time runs out in the queue is answered TIMEOUT. No exception leaves a callback.
 #include <atomic>
 #include <memory>
 #include <mutex>
@@ -47,7 +48,7 @@ class PlannerNode {
   ros::AsyncSpinner service_spinner_{2, &service_queue_};
   FleetPlanningService service_;
   std::atomic<bool> shutting_down_{false};
-  std::mutex plan_mutex_;  ///< held while a call plans
+  std::timed_mutex plan_mutex_;  ///< held while a call plans
 
   tf2_ros::Buffer tf_buffer_;
   tf2_ros::TransformListener tf_listener_;
