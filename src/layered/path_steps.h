@@ -17,9 +17,14 @@ struct Box {
   bool meets(const Box& o) const { return x0 <= o.x1 && o.x0 <= x1 && y0 <= o.y1 && o.y0 <= y1; }
 };
 
+/// A radius, in cells, that the footprint's cells never exceed (from the robot's cell).
+inline int radiusOf(const FootprintCells& cells) {
+  return static_cast<int>(std::ceil(std::sqrt(static_cast<double>(cells.maxNormSq())))) + 1;
+}
+
 /// Bounding box of every cell a path (and its parked tail) can cover.
 inline Box boxOf(const FootprintCells& cells, const Path& p) {
-  const int r = static_cast<int>(std::ceil(std::sqrt(static_cast<double>(cells.maxNormSq())))) + 1;
+  const int r = radiusOf(cells);
   Box b{p[0].x, p[0].y, p[0].x, p[0].y};
   for (const GridPose& s : p) {
     b.x0 = std::min(b.x0, s.x);

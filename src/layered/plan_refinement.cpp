@@ -11,10 +11,13 @@
 #include "fleet_planner/solvers/la_cbs.h"
 #include "fleet_planner/solvers/search_space.h"
 #include "fleet_planner/solvers/space_time_astar.h"
+#include "path_steps.h"
 
 namespace fleet_planner {
 
 namespace {
+
+using path_steps::radiusOf;
 
 // The robot's path around every other robot's path, strictly cheaper than `cost`; empty if
 // there is none (or the search hit a limit).
@@ -26,8 +29,18 @@ Path cheaperPath(const Instance& instance, const FleetGraphs& graphs, const std:
   sub.graphs = &graphs;
   sub.robots = {robot};
   sub.deadline = deadline;
+  // A path of cost below `cost` stays where the Manhattan distances to start and target add up
+  // to less than it: robots that never come within reach of that region cannot matter.
+  const GridPose& from = instance.robots[robot].start;
+  const GridPose& to = instance.robots[robot].target;
+  const int radius = radiusOf(graphs.cells(robot));
   for (int j = 0; j < static_cast<int>(paths.size()); ++j) {
-    if (j != robot) sub.moving.push_back({j, paths[j]});
+    if (j == robot) continue;
+    const int slack = cost - 1 + 4 * (radius + radiusOf(graphs.cells(j)));
+    const bool near = std::any_of(paths[j].begin(), paths[j].end(), [&](const GridPose& q) {
+      return std::abs(q.x - from.x) + std::abs(q.y - from.y) + std::abs(q.x - to.x) + std::abs(q.y - to.y) <= slack;
+    });
+    if (near) sub.moving.push_back({j, paths[j]});
   }
   const SearchSpace space(sub);
   if (!space.problem().empty()) return {};
@@ -64,14 +77,11 @@ Path idealPath(const Instance& instance, const FleetGraphs& graphs, int robot, c
 std::vector<int> blockers(const FleetGraphs& graphs, const std::vector<Path>& paths, int i, const Path& ideal,
                           int count) {
   std::vector<std::pair<int, int>> scored;  // (-score, robot)
-  auto radius = [](const FootprintCells& c) {
-    return static_cast<int>(std::ceil(std::sqrt(static_cast<double>(c.maxNormSq())))) + 1;
-  };
   const FootprintCells& A = graphs.cells(i);
   for (int j = 0; j < static_cast<int>(paths.size()); ++j) {
     if (j == i) continue;
     const FootprintCells& B = graphs.cells(j);
-    const int reach = radius(A) + radius(B);
+    const int reach = radiusOf(A) + radiusOf(B);
     int score = 0;
     for (const GridPose& q : paths[j]) {
       for (const GridPose& p : ideal) {
