@@ -268,6 +268,41 @@ def solve_tables(maps, rows):
     return out
 
 
+def quality_table(maps, rows):
+    """Layered against raw, per backend, on the runs where both solved the same instance."""
+    index = {}
+    for r in rows:
+        if success(r):
+            index[(r["map"], r["robots"], r["subset"], r["seed"], r["method"], r["backend"])] = r
+    backends = [b for b in dict.fromkeys(r["backend"] for r in rows)]
+    out = ["### Plan quality: layered / raw on the instances both solve (median ratio, worst ratio, "
+           "instances)", "",
+           "| map | " + " | ".join("%s SOC | %s makespan" % (b, b) for b in backends) + " |",
+           "|---|" + "---|---|" * len(backends)]
+    have = False
+    for name in maps + ["all maps"]:
+        cells = []
+        for b in backends:
+            soc, mk = [], []
+            for (m, k, subset, seed, method, backend), r in index.items():
+                if method != "layered" or backend != b or (name != "all maps" and m != name):
+                    continue
+                raw = index.get((m, k, subset, seed, "raw", b))
+                if raw is None or not num(raw["soc"]) or not num(raw["makespan"]):
+                    continue
+                soc.append(num(r["soc"]) / num(raw["soc"]))
+                mk.append(num(r["makespan"]) / num(raw["makespan"]))
+            if soc:
+                have = True
+                cells += ["%.2f (max %.2f, n=%d)" % (statistics.median(soc), max(soc), len(soc)),
+                          "%.2f (max %.2f)" % (statistics.median(mk), max(mk))]
+            else:
+                cells += ["-", "-"]
+        label = "**all maps**" if name == "all maps" else name
+        out.append("| %s | %s |" % (label, " | ".join(cells)))
+    return out if have else []
+
+
 def run_cell(r):
     if success(r):
         return "%.2f s, SOC %s, %.0f MB" % (num(r["time_s"]), r["soc"], num(r["peak_rss_mb"]))
@@ -331,6 +366,9 @@ def main(argv):
             written.append(plot_solve_map(name, g, limits, out_dir))
         written.append(plot_summary(maps, solve, out_dir))
         lines += solve_tables(maps, solve) + [""]
+        quality = quality_table(maps, solve)
+        if quality:
+            lines += quality + [""]
     if decomposition:
         maps = in_order(names, decomposition)
         written += plot_decomposition(maps, decomposition, out_dir)

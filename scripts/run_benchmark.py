@@ -13,7 +13,9 @@ only refines the earlier ones, so the statistics after step k are those of `--st
 Robots: "K mixed" = the first ceil(K/2) circles interleaved with the first floor(K/2) blocks of
 the map's pool (the CLI's --agents K). --random-subsets N adds, for every K, N random K-robot
 subsets (ceil(K/2) circles and floor(K/2) blocks drawn with seeds 1..N, the same seed passed to
-the solver), written as pool files into a temporary folder.
+the solver), written as pool files into a temporary folder. --generated N adds, for every K
+(even beyond the pool's size), N instances made by `fleet_planner_cli generate` (the paper's
+generator distribution) with seeds 1..N.
 
 Status: the CLI's status (SUCCESS, TIMEOUT, INFEASIBLE, ...), or UNREACHABLE (the CLI rejected
 the instance because a robot cannot reach its target: exit 2), BAD_INPUT (other exit 2),
@@ -57,7 +59,8 @@ PROFILES = {
 SOLVE_COLUMNS = ["map", "robots", "subset", "method", "backend", "steps", "seed", "status", "time_s",
                  "precompute_s", "decompose_s", "solve_s", "soc", "makespan", "subproblems",
                  "largest_subproblem", "decomposition_rate", "merges", "peak_rss_mb", "plan_valid",
-                 "wall_s", "wait4_rss_mb", "time_limit", "exit_code", "reason"]
+                 "wall_s", "wait4_rss_mb", "time_limit", "exit_code", "reason", "refine_s", "waits_removed",
+                 "threads"]
 SOLVE_KEY = ["map", "robots", "subset", "method", "backend", "steps", "seed"]
 DECOMP_COLUMNS = ["map", "robots", "subset", "seed", "steps", "status", "subproblems", "largest",
                   "rate", "step_time_s", "decompose_s", "relations_s", "precompute_s", "wall_s",
@@ -119,9 +122,22 @@ def random_subset_file(bench, name, k, seed, folder):
     return path
 
 
-def problem_args(bench, name, k, subset, seed, folder):
+def generated_file(cli, bench, name, k, seed, folder):
+    """Generates (once) a K-robot instance of the map with `seed` and returns its path."""
+    path = os.path.join(folder, "%s_K%d_gen%d.yaml" % (name, k, seed))
+    if not os.path.exists(path):
+        r = subprocess.run([cli, "generate", "--map", map_path(bench, name), "--agents", str(k), "--seed", str(seed),
+                            "--out", path], stdout=subprocess.PIPE, stderr=subprocess.PIPE, universal_newlines=True)
+        if r.returncode != 0:
+            fail("generate %s K=%d seed %d: %s" % (name, k, seed, last_line(r.stderr)))
+    return path
+
+
+def problem_args(bench, name, k, subset, seed, folder, cli=None):
     """CLI arguments naming the map and the robots of one run."""
     args = ["--map", map_path(bench, name)]
+    if subset == "generated":
+        return args + ["--instance", generated_file(cli, bench, name, k, seed, folder), "--agents", "0"]
     if subset == "mixed":
         return args + ["--instance", pool_path(bench, name), "--agents", str(k)]
     return args + ["--instance", random_subset_file(bench, name, k, seed, folder), "--agents", "0"]
@@ -228,7 +244,7 @@ def solve_one(args, run, folder):
     plan = os.path.join(folder, "plan.yaml")
     if os.path.exists(plan):
         os.remove(plan)
-    problem = problem_args(args.benchmark_dir, name, k, subset, seed, folder)
+    problem = problem_args(args.benchmark_dir, name, k, subset, seed, folder, args.cli)
     argv = [args.cli, "solve"] + problem + [
         "--backend", backend, "--mode", method, "--time-limit", str(args.time_limit),
         "--seed", str(seed), "--threads", str(args.threads), "--out", plan]
@@ -238,7 +254,7 @@ def solve_one(args, run, folder):
     r = run_process(argv, timeout)
     status, reason, j = outcome(r, timeout)
     row = dict(zip(SOLVE_KEY, [name, k, subset, method, backend, steps, seed]))
-    row.update(time_s=fmt(r["wall"]), wall_s=fmt(r["wall"]), peak_rss_mb=fmt(r["hwm_mb"], 1),
+    row.update(time_s=fmt(r["wall"]), wall_s=fmt(r["wall"]), peak_rss_mb=fmt(r["hwm_mb"], 1), threads=args.threads,
                wait4_rss_mb=fmt(r["wait4_mb"], 1), time_limit=args.time_limit, exit_code=r["code"], reason=reason)
     if j is None:
         row["status"] = status
@@ -248,6 +264,7 @@ def solve_one(args, run, folder):
                soc=fmt(j.get("soc")), makespan=fmt(j.get("makespan")),
                subproblems=fmt(j.get("subproblems")), largest_subproblem=fmt(j.get("max_subproblem")),
                decomposition_rate=fmt(j.get("decomposition_rate")), merges=len(j.get("merges", [])),
+               refine_s=fmt(j.get("refine_s")), waits_removed=fmt(j.get("waits_removed")),
                peak_rss_mb=fmt(max(r["hwm_mb"], j.get("peak_rss_mb") or 0), 1))
     if r["code"] == 1:
         row["status"] = "INVALID"
@@ -270,7 +287,7 @@ def validate(args, problem, plan, row):
 
 def decompose_one(args, run, folder):
     name, k, subset, seed = run
-    problem = problem_args(args.benchmark_dir, name, k, subset, seed, folder)
+    problem = problem_args(args.benchmark_dir, name, k, subset, seed, folder, args.cli)
     argv = [args.cli, "decompose"] + problem + ["--steps", "1234", "--threads", str(args.threads)]
     if args.validate:
         argv.append("--check")
@@ -301,9 +318,12 @@ def plan_runs(args, decomposition):
     for name in args.maps:
         circles, blocks = read_pool(pool_path(args.benchmark_dir, name))
         pool = len(circles) + len(blocks)
-        for k in [k for k in args.counts if k <= pool]:
-            subsets = [("mixed", s) for s in (args.seeds if not decomposition else [0])]
-            subsets += [("random", s) for s in range(1, args.random_subsets + 1)]
+        for k in args.counts:
+            subsets = []
+            if k <= pool:
+                subsets += [("mixed", s) for s in (args.seeds if not decomposition else [0])]
+                subsets += [("random", s) for s in range(1, args.random_subsets + 1)]
+            subsets += [("generated", s) for s in range(1, args.generated + 1)]
             for subset, seed in subsets:
                 if decomposition:
                     runs.append((name, k, subset, seed))
@@ -466,6 +486,9 @@ def parse_args(argv):
     p.add_argument("--seeds", nargs="+", type=int, default=[0], help="solver seeds of the 'K mixed' runs (default: 0)")
     p.add_argument("--random-subsets", type=int, default=0, metavar="N",
                    help="also N random K-robot subsets per K, drawn with seeds 1..N (default: 0)")
+    p.add_argument("--generated", type=int, default=0, metavar="N",
+                   help="also N instances per K from `fleet_planner_cli generate`, seeds 1..N; K may exceed the pool "
+                        "(default: 0)")
     p.add_argument("--threads", type=int, default=2, help="CLI --threads (default: 2)")
     p.add_argument("--no-validate", dest="validate", action="store_false",
                    help="skip the independent check of each plan (and decompose --check)")
@@ -503,7 +526,7 @@ def check_inputs(args):
                 known = sorted(f[:-7] for f in os.listdir(os.path.join(args.benchmark_dir, "instances"))
                                if f.endswith("_la.txt"))
                 fail("map %s: %s not found (maps with a pool: %s)" % (name, path, ", ".join(known)))
-    if args.time_limit <= 0 or args.grace < 0 or args.random_subsets < 0 or min(args.counts) < 1:
+    if args.time_limit <= 0 or args.grace < 0 or args.random_subsets < 0 or args.generated < 0 or min(args.counts) < 1:
         fail("--time-limit must be > 0, --grace and --random-subsets >= 0, counts >= 1")
     if len(set(args.seeds)) != len(args.seeds):
         fail("--seeds must not repeat")

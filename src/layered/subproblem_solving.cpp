@@ -13,6 +13,10 @@ namespace fleet_planner {
 
 namespace {
 
+// Low-level expansions per robot a level may spend planning around the timed paths of its
+// cluster's earlier levels before it is planned at their targets and delayed instead.
+constexpr long long kChainExpansionsPerRobot = 50'000;
+
 std::string idsOf(const Instance& instance, const std::vector<int>& robots) {
   std::string out;
   for (std::size_t k = 0; k < robots.size() && k < 6; ++k) out += (k ? "," : "") + instance.robots[robots[k]].id;
@@ -57,11 +61,17 @@ class Solving {
 
  private:
   // Units of work: a subproblem (parallel backends) or the unsolved rest of a cluster's chain
-  // (serial backends), in order.
+  // (serial backends), in order. A chain behind a failed level waits until a merge resolves it.
   std::vector<std::vector<std::size_t>> pendingUnits() const {
     std::vector<std::vector<std::size_t>> units;
+    std::vector<int> failed_clusters;
     for (std::size_t k = 0; k < order_.size(); ++k) {
+      if (results_[k] && !results_[k]->success()) failed_clusters.push_back(order_[k].cluster);
       if (results_[k]) continue;
+      if (serial_ && std::find(failed_clusters.begin(), failed_clusters.end(), order_[k].cluster) !=
+                         failed_clusters.end()) {
+        continue;
+      }
       const bool chained = serial_ && !units.empty() && order_[units.back().back()].cluster == order_[k].cluster &&
                            units.back().back() + 1 == k;
       if (chained) {
@@ -123,14 +133,43 @@ class Solving {
                              ? 1.0
                              : std::max(0.25, static_cast<double>(sub.robots.size()) / std::max(1, pending_robots_));
     sub.deadline = deadline_.within(deadline_.remaining() * share);
+    // Around many timed paths, a low-level search can take long to find the gaps between them.
+    // Past a budget, the level is planned as a parallel backend would (the earlier levels of its
+    // cluster at their targets) and delayed until it fits among them, which always works.
+    const bool around_paths = !sub.moving.empty();
+    if (around_paths) sub.max_expansions = kChainExpansionsPerRobot * static_cast<long long>(sub.robots.size());
     SolveResult solved = makeSolver(options_.backend)->solve(sub);
+    const bool fallback = around_paths && !solved.success() && !sub.deadline.expired();
+    if (fallback) solved = solveThenDelay(sub, solved.stats);
     SolvedSubproblem& s = order_[k];
+    s.delayed_in_cluster = fallback;
     s.status = solved.status;
     s.reason = solved.reason;
     s.time_s = solved.stats.time_s;
     s.stats = solved.stats;
     ++s.attempts;
     results_[k] = std::move(solved);
+  }
+
+  // `sub` with its moving obstacles turned into blocked targets, solved, and delayed until it
+  // fits among their paths.
+  SolveResult solveThenDelay(Subproblem sub, const SolveStats& first_attempt) {
+    const int n = static_cast<int>(instance_.robots.size());
+    std::vector<Path> earlier(n);
+    std::vector<char> done(n, 0);
+    for (MovingObstacle& m : sub.moving) {
+      sub.blocked.push_back({m.robot, instance_.robots[m.robot].target});
+      earlier[m.robot] = std::move(m.path);
+      done[m.robot] = 1;
+    }
+    sub.moving.clear();
+    sub.max_expansions = -1;
+    SolveResult solved = makeSolver(options_.backend)->solve(sub);
+    solved.stats.time_s += first_attempt.time_s;
+    solved.stats.low_level_expansions += first_attempt.low_level_expansions;
+    solved.stats.high_level_nodes += first_attempt.high_level_nodes;
+    if (solved.success()) delayToFit(graphs_, earlier, done, sub.robots, solved.paths);
+    return solved;
   }
 
   // Safeguard: merge subproblem k with the next one (or, for the last, with the one before);

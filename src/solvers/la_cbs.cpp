@@ -318,8 +318,15 @@ class CbsSearch {
 
 SolveResult LaCbs::solve(const Subproblem& problem) {
   (void)kRegistered;
+  LaCbsOptions options = options_;
+  if (problem.max_expansions >= 0) {
+    options.max_low_level_nodes = std::min(options.max_low_level_nodes, problem.max_expansions);
+    options.max_total_expansions = options.max_total_expansions < 0
+                                       ? problem.max_expansions
+                                       : std::min(options.max_total_expansions, problem.max_expansions);
+  }
   return solveWith(problem, /*moving_allowed=*/true, [&](const SearchSpace& space, SolveStats& stats) {
-    CbsSearch search(space, problem, options_);
+    CbsSearch search(space, problem, options);
     SolveResult r = search.run();
     stats = search.stats();
     return r;

@@ -13,7 +13,9 @@
 ///   (its levels in order) is a unit of work, and its plan is delayed as a whole until it fits
 ///   among the earlier clusters. Clusters have no solving order and subproblems are listed
 ///   cluster by cluster, so this is the paper's serial scheme inside a cluster and its parallel
-///   scheme between clusters; both keep every subproblem solvable.
+///   scheme between clusters; both keep every subproblem solvable. A level whose search around
+///   the timed paths exceeds an expansion budget (deterministic, unlike time) is planned with
+///   those robots at their targets instead and delayed until it fits among their paths.
 ///
 /// Units run on a pool of `threads`. Then the subproblems are merged in order. The first one
 /// that failed, while time remains, is merged with its neighbour (the next one, or for the last
@@ -42,6 +44,9 @@ struct SolvedSubproblem {
   int attempts = 0;     ///< times it was solved (more than one after a merge before it)
   SolveStats stats;     ///< the backend's statistics for its last attempt
   std::uint64_t seed_offset = 0;  ///< its first position in the decomposition
+  /// Serial backends: planning around its cluster's earlier paths ran past its budget, so it
+  /// was planned with their targets blocked and delayed until it fit among them.
+  bool delayed_in_cluster = false;
 };
 
 struct SubproblemSolving {

@@ -37,6 +37,10 @@ struct Subproblem {
   std::vector<MovingObstacle> moving;    ///< serial backends avoid these; others reject them
   Deadline deadline;
   std::uint64_t seed = 0;
+  /// Low-level expansions the backend may spend before answering TIMEOUT (-1: no limit).
+  /// Backends that count expansions honour it; unlike a deadline, it gives the same outcome on
+  /// every machine.
+  long long max_expansions = -1;
 };
 
 enum class SolveStatus { Success, Timeout, Infeasible, Cancelled, InvalidInput };
