@@ -219,29 +219,32 @@ std::vector<std::vector<int>> bipartitionLevels(DependencyOracle& oracle, const 
     std::vector<int> rest = levels[k];
     std::vector<std::vector<int>> tail;  // peeled to go last, the last one first
     // Peeling (beyond the paper): a robot that can go before all the others of the level, or
-    // after all of them, becomes a level of its own; repeat while one can.
+    // after all of them, becomes a level of its own. Passes over the level, in order, peel every
+    // robot that can go at that moment; they repeat while one peels.
     for (bool peeled = peel; peeled && rest.size() > 1 && !deadline.expired();) {
       peeled = false;
-      const Mask others = maskOf(rest, n);
-      const Mask base = LevelSplitter::with(splitter.targetsOf(earlier), splitter.startsOf(later));
-      // Every other robot of the level must still have its way once i's SAT is avoided too.
-      auto othersKeepClearOf = [&](int i, int sat) {
-        Mask avoid = base;
-        avoid[sat] = 1;
-        for (int j : rest) {
-          if (j != i && !oracle.sats(j, splitter.avail(), avoid)) return false;
-        }
-        return true;
-      };
-      for (int i : rest) {
+      const std::vector<int> candidates = rest;
+      for (int i : candidates) {
+        if (rest.size() <= 1 || deadline.expired()) break;
+        const Mask others = maskOf(rest, n);
+        const Mask base = LevelSplitter::with(splitter.targetsOf(earlier), splitter.startsOf(later));
+        // Every other robot of the level must still have its way once i's SAT is avoided too.
+        auto othersKeepClearOf = [&](int sat) {
+          Mask avoid = base;
+          avoid[sat] = 1;
+          for (int j : rest) {
+            if (j != i && !oracle.sats(j, splitter.avail(), avoid)) return false;
+          }
+          return true;
+        };
         Mask rest_but_i = others;
         rest_but_i[i] = 0;
         if (oracle.sats(i, splitter.avail(), LevelSplitter::with(base, splitter.startsOf(rest_but_i))) &&
-            othersKeepClearOf(i, 2 * i + 1)) {
+            othersKeepClearOf(2 * i + 1)) {
           out.push_back({i});  // first: clear of every start still waiting; the others of its target
           earlier[i] = 1;
         } else if (oracle.sats(i, splitter.avail(), LevelSplitter::with(base, splitter.targetsOf(rest_but_i))) &&
-                   othersKeepClearOf(i, 2 * i)) {
+                   othersKeepClearOf(2 * i)) {
           tail.push_back({i});  // last: clear of every target reached before it; the others of its start
           later[i] = 1;
         } else {
@@ -249,7 +252,6 @@ std::vector<std::vector<int>> bipartitionLevels(DependencyOracle& oracle, const 
         }
         rest.erase(std::find(rest.begin(), rest.end(), i));
         peeled = true;
-        break;
       }
     }
     while (!rest.empty()) {

@@ -41,7 +41,9 @@ LayeredResult planLayered(const GridMap& map, const Instance& instance, const Fl
     DecompositionOptions d;
     d.last_step = options.last_step;
     d.threads = options.threads;
-    result.decomposition = decompose(instance, graphs, d, deadline);
+    // At most half of the time: a decomposition cut short is still legal (coarser), and the
+    // subproblems need time too.
+    result.decomposition = decompose(instance, graphs, d, deadline.within(deadline.remaining() * 0.5));
     for (const auto& s : result.decomposition.subproblems) {
       SolvedSubproblem solved;
       solved.robots = s.robots;

@@ -107,7 +107,7 @@ RefinementStats refinePlan(const Instance& instance, const FleetGraphs& graphs, 
   const auto start = std::chrono::steady_clock::now();
   RefinementStats stats;
   const int n = static_cast<int>(paths.size());
-  const long long max_expansions = options.expansions_per_robot * n;
+  const long long max_expansions = std::min(options.max_expansions, options.expansions_per_robot * n);
   auto costOf = [&](int i) { return pathCost(paths[i], instance.robots[i].target); };
   auto makespan = [&] {
     int m = 0;

@@ -39,6 +39,8 @@ SolveResult solveWith(const Subproblem& problem, bool moving_allowed,
       result = make(SolveStatus::InvalidInput, "this backend cannot plan around moving obstacles (timed paths)");
     } else if (problem.deadline.cancelled()) {
       result = make(SolveStatus::Cancelled, "cancelled");
+    } else if (problem.deadline.expired()) {  // before the search space, which takes time to build
+      result = make(SolveStatus::Timeout, "deadline passed before the search started");
     } else {
       const SearchSpace space(problem);
       SolveStats stats;
