@@ -324,6 +324,7 @@ SolveResult LaCbs::solve(const Subproblem& problem) {
     options.max_total_expansions = options.max_total_expansions < 0
                                        ? problem.max_expansions
                                        : std::min(options.max_total_expansions, problem.max_expansions);
+    options.pairwise_delay_expansions = std::min(options.pairwise_delay_expansions, problem.max_expansions);
   }
   return solveWith(problem, /*moving_allowed=*/true, [&](const SearchSpace& space, SolveStats& stats) {
     CbsSearch search(space, problem, options);
