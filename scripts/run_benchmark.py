@@ -365,6 +365,7 @@ def sweep(args):
     decomposition = args.decomposition
     columns, key = (DECOMP_COLUMNS, DECOMP_KEY) if decomposition else (SOLVE_COLUMNS, SOLVE_KEY)
     runs = plan_runs(args, decomposition)
+    os.makedirs(os.path.dirname(os.path.abspath(args.out)), exist_ok=True)
     exists = os.path.exists(args.out) and os.path.getsize(args.out) > 0
     if exists and not args.resume:
         fail("%s exists: pass --resume to finish it, or choose another --out" % args.out)

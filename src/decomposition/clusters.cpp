@@ -42,8 +42,9 @@ std::vector<int> members(const Mask& m) {
 }
 
 // Algorithm 2: splits c into a major set and a remainder that are both clusters (the remainder
-// may be empty).
-std::pair<std::vector<int>, std::vector<int>> bipartition(DependencyOracle& oracle, const std::vector<int>& c) {
+// may be empty). Past the deadline, c stays whole (still legal).
+std::pair<std::vector<int>, std::vector<int>> bipartition(DependencyOracle& oracle, const std::vector<int>& c,
+                                                          const Deadline& deadline) {
   const int n = oracle.robots();
   if (c.size() <= 1) return {c, {}};
   const Mask in_c = maskOf(c, n);
@@ -51,6 +52,7 @@ std::pair<std::vector<int>, std::vector<int>> bipartition(DependencyOracle& orac
   // on i's best path inside c can be unavoidable: i's path already avoids every other one.
   std::vector<std::vector<int>> adjacent(n);
   for (int i : c) {
+    if (deadline.expired()) return {c, {}};
     const auto on_path = oracle.agents(i, in_c, {});
     if (!on_path) throw InvalidInput("decomposition: a robot lost its path inside its own cluster");
     for (int j : *on_path) {
@@ -73,6 +75,7 @@ std::pair<std::vector<int>, std::vector<int>> bipartition(DependencyOracle& orac
     major[i] = 1;
   };
   for (;;) {
+    if (deadline.expired()) return {c, {}};
     // Step 2: remainder robots that cannot keep clear of the major set join it.
     for (bool moved = true; moved;) {
       moved = false;
@@ -138,7 +141,7 @@ std::vector<std::vector<int>> bipartitionClusters(DependencyOracle& oracle, cons
         out.push_back(rest);  // what is left stays one cluster: still legal
         break;
       }
-      auto [major, remain] = bipartition(oracle, rest);
+      auto [major, remain] = bipartition(oracle, rest, deadline);
       out.push_back(std::move(major));
       rest = std::move(remain);
     }

@@ -64,14 +64,17 @@ class LevelSplitter {
   const Mask& avail() const { return avail_; }
 
   // Algorithm 4: splits l into a major level solved first and a remainder solved after it, both
-  // keeping clear of `base` (targets of earlier levels, starts of later ones).
-  std::pair<std::vector<int>, std::vector<int>> bipartition(const std::vector<int>& l, const Mask& base) {
+  // keeping clear of `base` (targets of earlier levels, starts of later ones). Past the
+  // deadline, l stays whole (still legal).
+  std::pair<std::vector<int>, std::vector<int>> bipartition(const std::vector<int>& l, const Mask& base,
+                                                            const Deadline& deadline) {
     if (l.size() <= 1) return {l, {}};
     // Step 1: the unavoidance graph: i -> j when i cannot avoid j's target (i goes first) and
     // j -> i when i cannot avoid j's start (j goes first).
     // Only SATs on i's best path can be unavoidable: that path avoids every other one.
     std::vector<std::vector<int>> out(n_), in(n_);
     for (int i : l) {
+      if (deadline.expired()) return {l, {}};
       const auto on_path = oracle_.sats(i, avail_, base);
       for (int j : l) {
         if (i == j) continue;
@@ -109,6 +112,7 @@ class LevelSplitter {
       }
     }
     for (;;) {
+      if (deadline.expired()) return {l, {}};
       // Step 2: remainder robots that cannot avoid the major set's targets join it.
       for (bool moved = true; moved;) {
         moved = false;
@@ -260,7 +264,7 @@ std::vector<std::vector<int>> bipartitionLevels(DependencyOracle& oracle, const 
         break;
       }
       const Mask base = LevelSplitter::with(splitter.targetsOf(earlier), splitter.startsOf(later));
-      auto [major, remain] = splitter.bipartition(rest, base);
+      auto [major, remain] = splitter.bipartition(rest, base, deadline);
       for (int r : major) earlier[r] = 1;
       out.push_back(std::move(major));
       rest = std::move(remain);
