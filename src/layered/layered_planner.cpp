@@ -116,6 +116,7 @@ LayeredResult planLayered(const GridMap& map, const Instance& instance, const Fl
     if (out_of_time || order.size() == 1) {
       result.status = out_of_time && !deadline.cancelled() ? SolveStatus::Timeout : solved.status;
       if (deadline.cancelled()) result.status = SolveStatus::Cancelled;
+      if (deadline.outOfMemory()) result.status = SolveStatus::ResourceLimit;
       result.reason = "subproblem " + std::to_string(k) + " (" + idsOf(instance, order[k].robots) + "): " + solved.reason;
       result.subproblems = order;
       result.solve_s = since(t);

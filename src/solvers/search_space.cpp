@@ -3,6 +3,7 @@
 #include <set>
 
 #include "fleet_planner/core/errors.h"
+#include "fleet_planner/core/resource_limits.h"
 
 namespace fleet_planner {
 
@@ -66,6 +67,12 @@ SearchSpace::SearchSpace(const Subproblem& problem)
     const Robot& r = instance_->robots[robots_[a]];
     starts_.push_back(graph(a).id(r.start));
     targets_.push_back(graph(a).id(r.target));
+  }
+  if (const MemoryGuard* guard = problem.deadline.memoryGuard()) {
+    guard->reserve(static_cast<double>(numAgents()) * static_cast<double>(distanceTableBytes(
+                                                          static_cast<long long>(g0.width()) * g0.height())) /
+                       1048576.0,
+                   "the distance tables of " + std::to_string(numAgents()) + " robots");
   }
   distances_.resize(numAgents());
   for (int a = 0; a < numAgents() && problem_.empty(); ++a) {

@@ -5,6 +5,7 @@
 
 #include "fleet_planner/core/collision.h"
 #include "fleet_planner/core/errors.h"
+#include "fleet_planner/core/resource_limits.h"
 
 namespace fleet_planner {
 
@@ -56,10 +57,18 @@ SolveResult solveWith(const Subproblem& problem, bool moving_allowed,
       }
       result.stats = stats;
     }
+  } catch (const ResourceLimitError& e) {
+    result = make(SolveStatus::ResourceLimit, e.what());
   } catch (const InputError& e) {
     result = make(SolveStatus::InvalidInput, e.what());
   } catch (const std::bad_alloc&) {
-    result = make(SolveStatus::Timeout, "out of memory");
+    result = make(SolveStatus::ResourceLimit, "out of memory (an allocation failed)");
+  }
+  // A search stopped by the memory guard says "time limit reached" or names its own budget:
+  // report the limit that stopped it.
+  if (!result.success() && result.status != SolveStatus::ResourceLimit && problem.deadline.outOfMemory()) {
+    result.status = SolveStatus::ResourceLimit;
+    result.reason = problem.deadline.memoryGuard()->reason();
   }
   result.stats.time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return result;

@@ -1,5 +1,5 @@
 // Resource limits: maps, fleets and state graphs over a limit are refused before they are
-// allocated, with an error naming the limit.
+// allocated, with an error naming the limit; the memory guard stops deadlines.
 #include "fleet_planner/core/resource_limits.h"
 
 #include <gtest/gtest.h>
@@ -9,8 +9,10 @@
 #include <sstream>
 #include <thread>
 
+#include "fleet_planner/core/deadline.h"
 #include "fleet_planner/core/fleet_graphs.h"
 #include "fleet_planner/core/map_io.h"
+#include "fleet_planner/core/memory_guard.h"
 #include "test_maps.h"
 #include "test_paths.h"
 
@@ -128,6 +130,42 @@ TEST(ResourceLimits, BigFleetIsRefusedWithAClearErrorInsteadOfAllocating) {
   if (rss_before > 0) {
     EXPECT_LT(residentMemoryMb() - rss_before, 200.0);  // not one 64 MB graph per robot
   }
+}
+
+TEST(MemoryGuard, TripsOnlyAboveItsLimitAndStaysTripped) {
+  const double rss = residentMemoryMb();
+  ASSERT_GT(rss, 1.0);
+  const MemoryGuard roomy(rss + 10000);
+  EXPECT_FALSE(roomy.exceeded());
+  const MemoryGuard tight(1.0);
+  EXPECT_TRUE(tight.exceeded());
+  EXPECT_TRUE(tight.exceeded());
+  EXPECT_GT(tight.peakSampledMb(), 1.0);
+  EXPECT_TRUE(contains(tight.reason(), "max_memory_mb=1")) << tight.reason();
+}
+
+TEST(MemoryGuard, ReserveRefusesAnAllocationThatWouldNotFit) {
+  const MemoryGuard guard(residentMemoryMb() + 100);
+  EXPECT_NO_THROW(guard.reserve(10, "ten"));
+  expectLimit([&] { guard.reserve(1000, "the distance tables of 9 robots"); }, "max_memory_mb",
+              {"the distance tables of 9 robots", "1000.0 MB", "max_memory_mb="});
+}
+
+TEST(MemoryGuard, ExpiresADeadlineAndTheDeadlinesDerivedFromIt) {
+  const MemoryGuard tight(1.0);
+  const Deadline plain = Deadline::in(100);
+  EXPECT_FALSE(plain.expired());
+  EXPECT_FALSE(plain.outOfMemory());
+  const Deadline guarded = plain.withMemoryGuard(&tight);
+  EXPECT_TRUE(guarded.expired());
+  EXPECT_TRUE(guarded.outOfMemory());
+  EXPECT_FALSE(guarded.timedOut());
+  EXPECT_FALSE(guarded.cancelled());
+  EXPECT_TRUE(guarded.within(50).expired());  // a subproblem's share keeps the guard
+  EXPECT_EQ(guarded.within(50).memoryGuard(), &tight);
+  EXPECT_TRUE(Deadline().withMemoryGuard(&tight).expired());  // no time limit, still guarded
+  const MemoryGuard roomy(residentMemoryMb() + 10000);
+  EXPECT_FALSE(Deadline().withMemoryGuard(&roomy).expired());
 }
 
 }  // namespace

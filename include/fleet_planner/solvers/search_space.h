@@ -17,6 +17,8 @@ class SearchSpace {
  public:
   /// Throws InvalidInput for a malformed subproblem (missing instance or graphs, a robot index
   /// out of range or repeated). Unsolvable robots are reported by problem(), not thrown.
+  /// With a memory guard on the deadline, throws ResourceLimitError (max_memory_mb) if the
+  /// distance tables would not fit, before allocating them.
   explicit SearchSpace(const Subproblem& problem);
 
   int numAgents() const { return static_cast<int>(robots_.size()); }
