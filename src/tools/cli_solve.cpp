@@ -3,6 +3,7 @@
 
 #include "cli_common.h"
 #include "fleet_planner/core/fleet_graphs.h"
+#include "fleet_planner/core/memory_guard.h"
 #include "fleet_planner/core/plan_io.h"
 #include "fleet_planner/core/plan_validator.h"
 #include "fleet_planner/layered_planner.h"
@@ -24,6 +25,7 @@ void addSolveCommand(CLI::App& app) {
   };
   auto o = std::make_shared<Options>();
   addProblemOptions(cmd, o->problem);
+  addLimitOptions(cmd, o->problem.limits);
   cmd->add_option("--backend", o->backend, "la_cbs | la_lacam (any registered backend)");
   cmd->add_option("--mode", o->mode, "raw: the fleet as one subproblem; layered: decompose first")
       ->check(CLI::IsMember({"raw", "layered"}));
@@ -37,12 +39,13 @@ void addSolveCommand(CLI::App& app) {
   cmd->add_flag("--details", o->details, "add the solved subproblems (robot ids, status, time, delay) to the JSON");
   cmd->callback([o] {
     const auto t0 = std::chrono::steady_clock::now();
-    const Deadline deadline = Deadline::in(o->time_limit);
+    const MemoryGuard memory(o->problem.limits.max_memory_mb);
+    const Deadline deadline = Deadline::in(o->time_limit).withMemoryGuard(&memory);
     const Problem p = loadProblem(o->problem);
     std::vector<Footprint> footprints;
     for (const auto& r : p.instance.robots) footprints.push_back(r.footprint);
     const auto t1 = std::chrono::steady_clock::now();
-    const FleetGraphs graphs(p.map, footprints, {}, o->threads);
+    const FleetGraphs graphs(p.map, footprints, {}, o->threads, o->problem.limits);
     const double precompute_s = secondsSince(t1);
 
     LayeredOptions options;
