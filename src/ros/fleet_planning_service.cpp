@@ -7,6 +7,8 @@
 #include "fleet_planner/core/errors.h"
 #include "fleet_planner/core/footprint_cells.h"
 #include "fleet_planner/core/instance_check.h"
+#include "fleet_planner/core/memory_guard.h"
+#include "fleet_planner/core/resource_limits.h"
 #include "fleet_planner/layered_planner.h"
 #include "fleet_planner/ros/backend_loader.h"
 #include "fleet_planner/ros/conversions.h"
@@ -103,6 +105,7 @@ std::uint8_t responseStatus(SolveStatus status) {
     case SolveStatus::Cancelled: return Response::TIMEOUT;
     case SolveStatus::Infeasible: return Response::INFEASIBLE;
     case SolveStatus::InvalidInput: return Response::INVALID_REQUEST;
+    case SolveStatus::ResourceLimit: return Response::RESOURCE_LIMIT;
   }
   return Response::INTERNAL_ERROR;
 }
@@ -110,11 +113,19 @@ std::uint8_t responseStatus(SolveStatus status) {
 }  // namespace
 
 void FleetPlanningService::setMap(const nav_msgs::OccupancyGrid& grid) {
+  try {
+    checkMapCells(grid.info.width, grid.info.height, config_.resourceLimits(), "map");  // before allocating
+  } catch (const ResourceLimitError& e) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    map_refused_ = e.what();  // calls without an earlier map answer RESOURCE_LIMIT with this
+    throw;
+  }
   auto snapshot = std::make_shared<MapSnapshot>();
   snapshot->grid = convert(grid, config_.occupancyPolicy());  // throws InvalidInput: keep the old map
   std::lock_guard<std::mutex> lock(mutex_);
   snapshot->version = ++map_version_;
   map_ = std::move(snapshot);
+  map_refused_.clear();
 }
 
 void FleetPlanningService::setFootprints(const fleet_planner::FleetFootprints& fleet) {
@@ -136,7 +147,8 @@ std::shared_ptr<const FleetGraphs> FleetPlanningService::graphsFor(const MapSnap
   cached = graphs_.graphs && graphs_.map_version == map.version && graphs_.footprints == footprints;
   if (!cached) {
     graphs_.graphs.reset();  // free the old graphs before building new ones
-    graphs_.graphs = std::make_shared<const FleetGraphs>(map.grid, footprints, ActionModel{}, config_.threads);
+    graphs_.graphs = std::make_shared<const FleetGraphs>(map.grid, footprints, ActionModel{}, config_.threads,
+                                                         config_.resourceLimits());  // may throw ResourceLimitError
     graphs_.map_version = map.version;
     graphs_.footprints = footprints;
   }
@@ -150,7 +162,10 @@ PlanCall FleetPlanningService::plan(const Request& request, const StartLookup& l
   call.response.statistics.makespan = -1;
   const auto t0 = Clock::now();
   try {
+    checkRobotCount(static_cast<long long>(request.tasks.size()), config_.resourceLimits());
     planChecked(request, lookup, cancel, call);
+  } catch (const ResourceLimitError& e) {
+    fail(call, Response::RESOURCE_LIMIT, e.what());
   } catch (const InputError& e) {
     fail(call, Response::INVALID_REQUEST, e.what());
   } catch (const std::exception& e) {
@@ -206,11 +221,14 @@ void FleetPlanningService::planChecked(const Request& request, const StartLookup
 
   std::shared_ptr<const MapSnapshot> map;
   std::map<std::string, fleet_planner::RobotFootprint> registry;
+  std::string map_refused;
   {
     std::lock_guard<std::mutex> lock(mutex_);
     map = map_;
     registry = footprints_;
+    map_refused = map_refused_;
   }
+  if (!map && !map_refused.empty()) return fail(call, Response::RESOURCE_LIMIT, "the map was refused: " + map_refused);
   if (!map) return fail(call, Response::NO_MAP, "no map received yet (topic 'map', nav_msgs/OccupancyGrid)");
   call.map = map;
   const GridMap& grid = map->grid;
@@ -309,7 +327,8 @@ void FleetPlanningService::planChecked(const Request& request, const StartLookup
   options.last_step = request.steps == 0 ? config_.decomposition_steps : request.steps;
   options.threads = config_.threads;
   options.seed = request.seed;
-  const Deadline deadline = Deadline::in(time_limit - since(t0), cancel);
+  const MemoryGuard memory(config_.max_memory_mb);
+  const Deadline deadline = Deadline::in(time_limit - since(t0), cancel).withMemoryGuard(&memory);
   const LayeredResult result = planLayered(grid, instance, *graphs, options, deadline);
 
   res.statistics.decomposition_time = result.decompose_s;
@@ -377,7 +396,8 @@ void FleetPlanningService::planChecked(const Request& request, const StartLookup
 std::string fleetStatusName(std::uint8_t status) {
   static const char* const kNames[] = {"SUCCESS",         "TIMEOUT",       "INFEASIBLE",    "INVALID_REQUEST",
                                        "NO_MAP",          "UNKNOWN_ROBOT", "UNKNOWN_BACKEND", "INVALID_START",
-                                       "INVALID_GOAL",    "NO_TRANSFORM",  "BUSY",          "INTERNAL_ERROR"};
+                                       "INVALID_GOAL",    "NO_TRANSFORM",  "BUSY",          "INTERNAL_ERROR",
+                                       "RESOURCE_LIMIT"};
   return status < std::size(kNames) ? kNames[status] : "STATUS_" + std::to_string(status);
 }
 

@@ -52,7 +52,9 @@ class FleetPlanningService {
  public:
   explicit FleetPlanningService(PlannerConfig config) : config_(std::move(config)) {}
 
-  /// Thread-safe; a running call keeps the map it started with.
+  /// Thread-safe; a running call keeps the map it started with. Throws InvalidInput for a bad
+  /// map and ResourceLimitError, before converting it, for one over max_map_cells (the previous
+  /// map stays; without one, calls answer RESOURCE_LIMIT).
   void setMap(const nav_msgs::OccupancyGrid& grid);
   /// Thread-safe; replaces the whole registry.
   void setFootprints(const fleet_planner::FleetFootprints& fleet);
@@ -81,6 +83,7 @@ class FleetPlanningService {
   mutable std::mutex mutex_;  ///< guards map_ and footprints_
   std::shared_ptr<const MapSnapshot> map_;
   std::uint64_t map_version_ = 0;
+  std::string map_refused_;  ///< why the last map was refused (max_map_cells); empty once one is taken
   std::map<std::string, fleet_planner::RobotFootprint> footprints_;
   std::mutex graphs_mutex_;
   Graphs graphs_;
