@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <atomic>
 #include <thread>
+#include <string>
 #include <unordered_map>
 
 namespace fleet_planner {
@@ -47,17 +48,22 @@ const GridMap& FleetGraphs::admit(const GridMap& map, const Groups& groups, cons
 }
 
 FleetGraphs::FleetGraphs(const GridMap& map, const std::vector<Footprint>& footprints, ActionModel model,
-                         int threads, const ResourceLimits& limits)
-    : FleetGraphs(map, group(footprints), model, threads, limits) {}
+                         int threads, const ResourceLimits& limits, const Deadline& deadline)
+    : FleetGraphs(map, group(footprints), model, threads, limits, deadline) {}
 
 FleetGraphs::FleetGraphs(const GridMap& map, Groups groups, ActionModel model, int threads,
-                         const ResourceLimits& limits)
+                         const ResourceLimits& limits, const Deadline& deadline)
     : obstacles_(admit(map, groups, limits)), robot_graph_(std::move(groups.of_robot)) {
   const std::vector<std::shared_ptr<const FootprintCells>>& distinct = groups.cells;
   graphs_.resize(distinct.size());
   std::atomic<std::size_t> next{0};
+  std::atomic<bool> expired{false};
   auto worker = [&] {
     for (std::size_t g = next++; g < distinct.size(); g = next++) {
+      if (expired || deadline.expired()) {
+        expired = true;
+        return;
+      }
       graphs_[g] = std::make_shared<const StateGraph>(map, obstacles_, distinct[g], model);
     }
   };
@@ -66,6 +72,12 @@ FleetGraphs::FleetGraphs(const GridMap& map, Groups groups, ActionModel model, i
   for (int t = 1; t < n; ++t) pool.emplace_back(worker);
   worker();
   for (auto& t : pool) t.join();
+  if (expired) {
+    std::size_t built = 0;
+    for (const auto& g : graphs_) built += g ? 1 : 0;
+    throw DeadlineExpired("deadline passed while the state graphs were built (" + std::to_string(built) + " of " +
+                          std::to_string(distinct.size()) + " built)");
+  }
 }
 
 long long FleetGraphs::totalStates() const {

@@ -142,13 +142,13 @@ bool FleetPlanningService::hasMap() const {
 
 std::shared_ptr<const FleetGraphs> FleetPlanningService::graphsFor(const MapSnapshot& map,
                                                                    const std::vector<Footprint>& footprints,
-                                                                   bool& cached) {
+                                                                   bool& cached, const Deadline& deadline) {
   std::lock_guard<std::mutex> lock(graphs_mutex_);
   cached = graphs_.graphs && graphs_.map_version == map.version && graphs_.footprints == footprints;
   if (!cached) {
     graphs_.graphs.reset();  // free the old graphs before building new ones
     graphs_.graphs = std::make_shared<const FleetGraphs>(map.grid, footprints, ActionModel{}, config_.threads,
-                                                         config_.resourceLimits());  // may throw ResourceLimitError
+                                                         config_.resourceLimits(), deadline);  // may throw ResourceLimitError
     graphs_.map_version = map.version;
     graphs_.footprints = footprints;
   }
@@ -166,6 +166,8 @@ PlanCall FleetPlanningService::plan(const Request& request, const StartLookup& l
     planChecked(request, lookup, cancel, call);
   } catch (const ResourceLimitError& e) {
     fail(call, Response::RESOURCE_LIMIT, e.what());
+  } catch (const DeadlineExpired& e) {
+    fail(call, Response::TIMEOUT, std::string("TIMEOUT: ") + e.what());
   } catch (const InputError& e) {
     fail(call, Response::INVALID_REQUEST, e.what());
   } catch (const std::exception& e) {
@@ -303,11 +305,13 @@ void FleetPlanningService::planChecked(const Request& request, const StartLookup
                                "tasks[" + std::to_string(i) + "]"});
     footprints.push_back(tasks[i].footprint);
   }
+  const MemoryGuard memory(config_.max_memory_mb);  // the graphs count against the time limit
+  const Deadline deadline = Deadline::in(time_limit - since(t0), cancel).withMemoryGuard(&memory);
   const auto t_graphs = Clock::now();
   bool cached = false;
-  const auto graphs = graphsFor(*map, footprints, cached);
+  const auto graphs = graphsFor(*map, footprints, cached, deadline);
   res.statistics.precompute_time = cached ? 0.0 : since(t_graphs);
-  const SolvabilityReport report = checkSolvability(instance, *graphs);
+  const SolvabilityReport report = checkSolvability(instance, *graphs, deadline);
   for (const RobotProblem& p : report.problems) {
     auto& result = res.robots[p.robot];
     if (result.status != RobotResultMsg::OK) continue;
@@ -327,8 +331,6 @@ void FleetPlanningService::planChecked(const Request& request, const StartLookup
   options.last_step = request.steps == 0 ? config_.decomposition_steps : request.steps;
   options.threads = config_.threads;
   options.seed = request.seed;
-  const MemoryGuard memory(config_.max_memory_mb);
-  const Deadline deadline = Deadline::in(time_limit - since(t0), cancel).withMemoryGuard(&memory);
   const LayeredResult result = planLayered(grid, instance, *graphs, options, deadline);
 
   res.statistics.decomposition_time = result.decompose_s;

@@ -45,6 +45,9 @@ SolveResult solveWith(const Subproblem& problem, bool moving_allowed,
       SolveStats stats;
       if (!space.problem().empty()) {
         result = make(SolveStatus::Infeasible, space.problem());
+      } else if (space.stopped()) {
+        result = make(problem.deadline.cancelled() ? SolveStatus::Cancelled : SolveStatus::Timeout,
+                      "deadline passed while the distance tables were built");
       } else if (std::string overlap = overlapProblem(space, problem); !overlap.empty()) {
         result = make(SolveStatus::Infeasible, overlap);
       } else if (problem.deadline.expired()) {

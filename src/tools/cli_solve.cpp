@@ -1,5 +1,6 @@
 // `solve`: plan an instance with a backend, raw (the fleet as one subproblem) or layered.
 #include <chrono>
+#include <memory>
 
 #include "cli_common.h"
 #include "fleet_planner/core/fleet_graphs.h"
@@ -45,7 +46,18 @@ void addSolveCommand(CLI::App& app) {
     std::vector<Footprint> footprints;
     for (const auto& r : p.instance.robots) footprints.push_back(r.footprint);
     const auto t1 = std::chrono::steady_clock::now();
-    const FleetGraphs graphs(p.map, footprints, {}, o->threads, o->problem.limits);
+    // The graphs count against the time limit: a deadline that passes while they are built is a
+    // TIMEOUT like any other.
+    std::unique_ptr<FleetGraphs> graphs;
+    LayeredResult result;
+    try {
+      graphs = std::make_unique<FleetGraphs>(p.map, footprints, ActionModel{}, o->threads, o->problem.limits, deadline);
+    } catch (const DeadlineExpired& e) {
+      result.status = deadline.outOfMemory() ? SolveStatus::ResourceLimit
+                      : deadline.cancelled() ? SolveStatus::Cancelled
+                                             : SolveStatus::Timeout;
+      result.reason = deadline.outOfMemory() ? memory.reason() : e.what();
+    }
     const double precompute_s = secondsSince(t1);
 
     LayeredOptions options;
@@ -54,7 +66,7 @@ void addSolveCommand(CLI::App& app) {
     options.last_step = static_cast<int>(o->steps.size());
     options.threads = o->threads;
     options.seed = o->seed;
-    const LayeredResult result = planLayered(p.map, p.instance, graphs, options, deadline);
+    if (graphs) result = planLayered(p.map, p.instance, *graphs, options, deadline);
 
     const int n = static_cast<int>(p.instance.robots.size());
     int largest = 0;

@@ -62,7 +62,7 @@ RunOutcome solveOnce(const StressCase& c, const StressConfig& config, double lim
   const auto t0 = std::chrono::steady_clock::now();
   try {
     const Deadline deadline = Deadline::in(limit).withMemoryGuard(&guard);
-    const FleetGraphs graphs(c.map, footprints, c.model, options.threads, options.limits);
+    const FleetGraphs graphs(c.map, footprints, c.model, options.threads, options.limits, deadline);
     LayeredOptions lo;
     lo.backend = config.backend;
     lo.decompose = config.steps > 0;
@@ -80,6 +80,10 @@ RunOutcome solveOnce(const StressCase& c, const StressConfig& config, double lim
       out.soc = result.metrics.soc;
       out.deterministic_candidate = result.merges.empty() && result.decomposition.complete;
     }
+  } catch (const DeadlineExpired& e) {  // the state graphs were not done in time: a TIMEOUT
+    out.wall_s = secondsSince(t0);
+    out.status = guard.exceeded() ? "RESOURCE_LIMIT" : "TIMEOUT";
+    out.reason = e.what();
   } catch (const std::exception& e) {
     out.wall_s = secondsSince(t0);
     out.exception = e.what();

@@ -5,6 +5,7 @@
 #include <atomic>
 #include <chrono>
 #include <limits>
+#include <stdexcept>
 
 #include "fleet_planner/core/memory_guard.h"
 
@@ -67,6 +68,13 @@ class Deadline {
   Clock::time_point end_;
   const std::atomic<bool>* cancel_ = nullptr;
   const MemoryGuard* memory_ = nullptr;
+};
+
+/// Thrown by work that has no partial result to return (building state graphs) when its deadline
+/// passes first; callers report it as TIMEOUT (or CANCELLED, RESOURCE_LIMIT: see the deadline).
+class DeadlineExpired : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
 };
 
 }  // namespace fleet_planner

@@ -5,6 +5,7 @@
 #include <memory>
 #include <vector>
 
+#include "fleet_planner/core/deadline.h"
 #include "fleet_planner/core/footprint.h"
 #include "fleet_planner/core/grid_map.h"
 #include "fleet_planner/core/obstacle_index.h"
@@ -20,9 +21,10 @@ class FleetGraphs {
   /// before allocating anything in proportion to the map, ResourceLimitError for more robots
   /// than limits.max_robots, a map larger than limits.max_map_cells, or graphs whose estimated
   /// memory (resource_limits.h) on top of the process's resident memory exceeds
-  /// limits.max_memory_mb.
+  /// limits.max_memory_mb. The deadline is checked before each graph (a few milliseconds on a
+  /// 256 x 256 map): throws DeadlineExpired if it passes before every graph is built.
   FleetGraphs(const GridMap& map, const std::vector<Footprint>& footprints, ActionModel model = {},
-              int threads = 1, const ResourceLimits& limits = {});
+              int threads = 1, const ResourceLimits& limits = {}, const Deadline& deadline = {});
 
   int numRobots() const { return static_cast<int>(robot_graph_.size()); }
   int numGraphs() const { return static_cast<int>(graphs_.size()); }
@@ -43,7 +45,8 @@ class FleetGraphs {
   std::size_t memoryBytes() const;
 
  private:
-  FleetGraphs(const GridMap& map, Groups groups, ActionModel model, int threads, const ResourceLimits& limits);
+  FleetGraphs(const GridMap& map, Groups groups, ActionModel model, int threads, const ResourceLimits& limits,
+              const Deadline& deadline);
   /// `map`, after the limits' checks (throws ResourceLimitError).
   static const GridMap& admit(const GridMap& map, const Groups& groups, const ResourceLimits& limits);
 

@@ -74,8 +74,9 @@ class FleetPlanningService {
     std::shared_ptr<const FleetGraphs> graphs;
   };
   /// The fleet's state graphs; reused when the map and the footprints are those of the last call.
+  /// Throws DeadlineExpired if the deadline passes while they are built.
   std::shared_ptr<const FleetGraphs> graphsFor(const MapSnapshot& map, const std::vector<Footprint>& footprints,
-                                               bool& cached);
+                                               bool& cached, const Deadline& deadline);
   void planChecked(const fleet_planner::PlanFleet::Request& request, const StartLookup& lookup,
                    const std::atomic<bool>* cancel, PlanCall& call);
 
