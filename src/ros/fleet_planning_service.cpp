@@ -98,6 +98,13 @@ bool failOnRobotErrors(PlanCall& call) {
   return true;
 }
 
+/// Robots still OK after a failure that is not theirs (a limit, the deadline) were not planned.
+void markNotPlanned(PlanCall& call) {
+  for (auto& r : call.response.robots) {
+    if (r.status == RobotResultMsg::OK) r.status = RobotResultMsg::NOT_PLANNED, r.message = "not planned: " + call.response.message;
+  }
+}
+
 std::uint8_t responseStatus(SolveStatus status) {
   switch (status) {
     case SolveStatus::Success: return Response::SUCCESS;
@@ -166,8 +173,10 @@ PlanCall FleetPlanningService::plan(const Request& request, const StartLookup& l
     planChecked(request, lookup, cancel, call);
   } catch (const ResourceLimitError& e) {
     fail(call, Response::RESOURCE_LIMIT, e.what());
-  } catch (const DeadlineExpired& e) {
+    markNotPlanned(call);
+  } catch (const DeadlineExpired& e) {  // the state graphs were not done in time
     fail(call, Response::TIMEOUT, std::string("TIMEOUT: ") + e.what());
+    markNotPlanned(call);
   } catch (const InputError& e) {
     fail(call, Response::INVALID_REQUEST, e.what());
   } catch (const std::exception& e) {

@@ -88,6 +88,21 @@ TEST(PlanningServiceLimits, GraphsOverMaxMemoryAnswerResourceLimit) {
   EXPECT_TRUE(contains(r.message, "estimated")) << r.message;
 }
 
+TEST(PlanningServiceLimits, GraphsBuiltPastTheDeadlineAnswerTimeout) {
+  // The call's time limit includes the state graphs: a limit that passes while they are built
+  // is a TIMEOUT (they used to be built in full before the deadline was even set).
+  FleetPlanningService service{PlannerConfig{}};
+  service.setMap(occupancyGrid(24, 12, kRes, kOx, kOy));
+  service.setFootprints(registry());
+  Request request = threeRobots();
+  request.time_limit = 1e-9;
+  const Response r = service.plan(request, nullptr).response;
+  EXPECT_EQ(r.status, Response::TIMEOUT) << r.message;
+  EXPECT_TRUE(contains(r.message, "state graphs")) << r.message;
+  for (const auto& robot : r.robots) EXPECT_EQ(robot.status, fleet_planner::RobotResult::NOT_PLANNED) << robot.message;
+  EXPECT_EQ(service.plan(threeRobots(), nullptr).response.status, Response::SUCCESS);  // nothing half-built is kept
+}
+
 TEST(PlanningServiceLimits, StatusNameOfResourceLimit) {
   EXPECT_EQ(fleetStatusName(Response::RESOURCE_LIMIT), "RESOURCE_LIMIT");
 }
