@@ -49,12 +49,14 @@ void MemoryGuard::reserve(double extra_mb, const std::string& what) const {
   if (rss + extra_mb <= limit_mb_) return;
   rss = std::max(0.0, trimmedResidentMb());
   if (rss + extra_mb <= limit_mb_) return;
-  throw ResourceLimitError("max_memory_mb", what + " need an estimated " + mb(extra_mb) + " on top of the " + mb(rss) +
-                                                " in use, more than max_memory_mb=" + number(limit_mb_));
+  throw ResourceLimitError(
+      "max_memory_mb", what + " need an estimated " + mb(extra_mb) + " on top of the " + mb(rss) +
+                           " in use, more than max_memory_mb=" + number(limit_mb_));
 }
 
 std::string MemoryGuard::reason() const {
-  return "the process's resident memory reached " + mb(peakSampledMb()) + ", over max_memory_mb=" + number(limit_mb_);
+  return "the process's resident memory reached " + mb(peakSampledMb()) +
+         ", over max_memory_mb=" + number(limit_mb_);
 }
 
 }  // namespace fleet_planner

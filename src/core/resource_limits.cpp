@@ -1,9 +1,10 @@
 #include "fleet_planner/core/resource_limits.h"
 
+#include <unistd.h>
+
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
-#include <unistd.h>
 
 namespace fleet_planner {
 
@@ -26,20 +27,24 @@ std::string number(double v) {
 }  // namespace
 
 std::string resourceLimitsProblem(const ResourceLimits& limits) {
-  if (limits.max_map_cells < 1) return "max_map_cells must be >= 1 (got " + std::to_string(limits.max_map_cells) + ")";
-  if (limits.max_robots < 1) return "max_robots must be >= 1 (got " + std::to_string(limits.max_robots) + ")";
+  if (limits.max_map_cells < 1)
+    return "max_map_cells must be >= 1 (got " + std::to_string(limits.max_map_cells) + ")";
+  if (limits.max_robots < 1)
+    return "max_robots must be >= 1 (got " + std::to_string(limits.max_robots) + ")";
   if (!(limits.max_memory_mb > 0) || !std::isfinite(limits.max_memory_mb)) {
     return "max_memory_mb must be > 0 and finite (got " + number(limits.max_memory_mb) + ")";
   }
   return "";
 }
 
-void checkMapCells(long long width, long long height, const ResourceLimits& limits, const std::string& what) {
+void checkMapCells(long long width, long long height, const ResourceLimits& limits,
+                   const std::string& what) {
   const long long cells = width * height;
   if (cells <= limits.max_map_cells) return;
-  throw ResourceLimitError("max_map_cells", what + ": map of " + std::to_string(width) + " x " + std::to_string(height) +
-                                                " = " + std::to_string(cells) + " cells exceeds max_map_cells=" +
-                                                std::to_string(limits.max_map_cells));
+  throw ResourceLimitError(
+      "max_map_cells", what + ": map of " + std::to_string(width) + " x " + std::to_string(height) +
+                           " = " + std::to_string(cells) +
+                           " cells exceeds max_map_cells=" + std::to_string(limits.max_map_cells));
 }
 
 void checkRobotCount(long long robots, const ResourceLimits& limits) {
@@ -65,18 +70,20 @@ MemoryEstimate estimateMemory(int width, int height, int robots, int graphs, int
   e.searched_agents = searched_agents;
   const long long cells = static_cast<long long>(width) * height;
   // GridMap (1 byte), ObstacleIndex clearance (8 bytes) and row prefix counts (4 bytes) per cell.
-  e.map_mb = static_cast<double>(cells) * (sizeof(std::uint8_t) + sizeof(std::int64_t) + sizeof(std::int32_t)) / kMb;
+  e.map_mb = static_cast<double>(cells) *
+             (sizeof(std::uint8_t) + sizeof(std::int64_t) + sizeof(std::int32_t)) / kMb;
   e.graphs_mb = static_cast<double>(graphs) * static_cast<double>(stateGraphBytes(cells)) / kMb;
-  e.search_mb = static_cast<double>(searched_agents) * static_cast<double>(distanceTableBytes(cells)) / kMb;
+  e.search_mb =
+      static_cast<double>(searched_agents) * static_cast<double>(distanceTableBytes(cells)) / kMb;
   return e;
 }
 
 std::string MemoryEstimate::describe() const {
-  std::string out = mb(totalMb()) + " (map " + mb(map_mb) + ", " + std::to_string(graphs) + " state graph" +
-                    (graphs == 1 ? "" : "s") + " " + mb(graphs_mb);
+  std::string out = mb(totalMb()) + " (map " + mb(map_mb) + ", " + std::to_string(graphs) +
+                    " state graph" + (graphs == 1 ? "" : "s") + " " + mb(graphs_mb);
   if (searched_agents > 0) {
-    out += ", distance tables of " + std::to_string(searched_agents) + " agent" + (searched_agents == 1 ? "" : "s") +
-           " " + mb(search_mb);
+    out += ", distance tables of " + std::to_string(searched_agents) + " agent" +
+           (searched_agents == 1 ? "" : "s") + " " + mb(search_mb);
   }
   return out + ")";
 }
@@ -85,10 +92,12 @@ void checkMemory(const MemoryEstimate& estimate, double in_use_mb, const Resourc
                  const std::string& what) {
   const double in_use = in_use_mb > 0 ? in_use_mb : 0.0;
   if (in_use + estimate.totalMb() <= limits.max_memory_mb) return;
-  throw ResourceLimitError(
-      "max_memory_mb", what + " on a " + std::to_string(estimate.width) + " x " + std::to_string(estimate.height) +
-                           " map need an estimated " + estimate.describe() + (in_use > 0 ? " on top of the " + mb(in_use) + " in use" : "") +
-                           ", more than max_memory_mb=" + number(limits.max_memory_mb));
+  throw ResourceLimitError("max_memory_mb",
+                           what + " on a " + std::to_string(estimate.width) + " x " +
+                               std::to_string(estimate.height) + " map need an estimated " +
+                               estimate.describe() +
+                               (in_use > 0 ? " on top of the " + mb(in_use) + " in use" : "") +
+                               ", more than max_memory_mb=" + number(limits.max_memory_mb));
 }
 
 double residentMemoryMb() {

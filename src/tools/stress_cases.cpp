@@ -12,10 +12,13 @@ namespace fleet_planner::cli {
 
 namespace {
 
-int between(Rng& rng, int lo, int hi) { return static_cast<int>(rng.uniformInt(lo, std::max(lo, hi))); }
+int between(Rng& rng, int lo, int hi) {
+  return static_cast<int>(rng.uniformInt(lo, std::max(lo, hi)));
+}
 
 void block(std::vector<std::uint8_t>& cells, int width, int height, int x, int y) {
-  if (x >= 0 && y >= 0 && x < width && y < height) cells[static_cast<std::size_t>(y) * width + x] = 1;
+  if (x >= 0 && y >= 0 && x < width && y < height)
+    cells[static_cast<std::size_t>(y) * width + x] = 1;
 }
 
 // Scattered single obstacles, each cell blocked with probability `density`.
@@ -93,7 +96,8 @@ GridMap cropMap(Rng& rng, const GridMap& source, int width, int height) {
   std::vector<std::uint8_t> best;
   int best_free = -1;
   for (int draw = 0; draw < 8 && best_free * 3 < width * height; ++draw) {
-    const int x0 = between(rng, 0, source.width() - width), y0 = between(rng, 0, source.height() - height);
+    const int x0 = between(rng, 0, source.width() - width),
+              y0 = between(rng, 0, source.height() - height);
     std::vector<std::uint8_t> cells(static_cast<std::size_t>(width) * height);
     int free = 0;
     for (int y = 0; y < height; ++y) {
@@ -141,7 +145,8 @@ StressCase makeStressCase(const StressCaseOptions& options, int index) {
         c.map = corridorsMap(rng, width, height);
         break;
       default: {
-        const GridMap& source = options.crop_maps[rng.uniformInt(0, static_cast<std::int64_t>(options.crop_maps.size()) - 1)];
+        const GridMap& source = options.crop_maps[rng.uniformInt(
+            0, static_cast<std::int64_t>(options.crop_maps.size()) - 1)];
         c.map_kind = "crop:" + std::filesystem::path(source.source()).filename().string();
         c.map = cropMap(rng, source, width, height);
       }
@@ -171,12 +176,13 @@ StressCase makeStressCase(const StressCaseOptions& options, int index) {
       }
     }
   }
-  throw InvalidInput("stress instance " + std::to_string(index) + ": no robots could be placed on 8 maps");
+  throw InvalidInput("stress instance " + std::to_string(index) +
+                     ": no robots could be placed on 8 maps");
 }
 
 std::string movingAiText(const GridMap& map) {
-  std::string out = "type octile\nheight " + std::to_string(map.height()) + "\nwidth " + std::to_string(map.width()) +
-                    "\nmap\n";
+  std::string out = "type octile\nheight " + std::to_string(map.height()) + "\nwidth " +
+                    std::to_string(map.width()) + "\nmap\n";
   for (int y = 0; y < map.height(); ++y) {
     for (int x = 0; x < map.width(); ++x) out += map.blocked(x, y) ? '@' : '.';
     out += '\n';

@@ -53,7 +53,8 @@ double processCpuSeconds() {
   return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
 }
 
-RunOutcome solveOnce(const StressCase& c, const StressConfig& config, double limit, const StressRunOptions& options) {
+RunOutcome solveOnce(const StressCase& c, const StressConfig& config, double limit,
+                     const StressRunOptions& options) {
   RunOutcome out;
   const double cpu0 = processCpuSeconds();
   std::vector<Footprint> footprints;
@@ -110,12 +111,14 @@ std::string StressConfig::mode() const {
 
 std::string StressConfig::name() const { return backend + "/" + mode(); }
 
-double stressTimeLimit(const StressCase& c, const StressConfig& config, const StressRunOptions& options) {
+double stressTimeLimit(const StressCase& c, const StressConfig& config,
+                       const StressRunOptions& options) {
   if (!(options.min_time_limit < options.time_limit)) return options.time_limit;
   std::uint64_t h = c.seed;
   for (char ch : config.name()) h = (h ^ static_cast<unsigned char>(ch)) * 1099511628211ULL;
   Rng rng(h);
-  const double t = options.min_time_limit + rng.uniform01() * (options.time_limit - options.min_time_limit);
+  const double t =
+      options.min_time_limit + rng.uniform01() * (options.time_limit - options.min_time_limit);
   return std::round(t * 1000) / 1000;  // whole milliseconds: a reproducer can name it exactly
 }
 
@@ -123,9 +126,14 @@ nlohmann::json runStressCase(const StressCase& c, const StressRunOptions& option
                              const std::function<void(const StressConfig&)>& started) {
   nlohmann::json runs = nlohmann::json::array();
   nlohmann::json violations = nlohmann::json::array();
-  auto violation = [&](const std::string& kind, const StressConfig& config, double limit, const std::string& detail) {
-    violations.push_back({{"kind", kind}, {"config", config.name()}, {"backend", config.backend},
-                          {"mode", config.mode()}, {"limit_s", limit}, {"detail", shortText(detail, 600)}});
+  auto violation = [&](const std::string& kind, const StressConfig& config, double limit,
+                       const std::string& detail) {
+    violations.push_back({{"kind", kind},
+                          {"config", config.name()},
+                          {"backend", config.backend},
+                          {"mode", config.mode()},
+                          {"limit_s", limit},
+                          {"detail", shortText(detail, 600)}});
   };
   std::vector<RunOutcome> outcomes;
   for (const StressConfig& config : options.configs) {
@@ -149,8 +157,11 @@ nlohmann::json runStressCase(const StressCase& c, const StressRunOptions& option
         cpu_s = again.cpu_s;
       }
     }
-    nlohmann::json run{{"config", config.name()}, {"limit_s", limit}, {"wall_s", limit + overrun_ms / 1000.0},
-                       {"cpu_s", cpu_s}, {"overrun_ms", overrun_ms}};
+    nlohmann::json run{{"config", config.name()},
+                       {"limit_s", limit},
+                       {"wall_s", limit + overrun_ms / 1000.0},
+                       {"cpu_s", cpu_s},
+                       {"overrun_ms", overrun_ms}};
     if (attempts > 1) {
       run["attempts"] = attempts;
       run["first_overrun_ms"] = first_overrun_ms;
@@ -166,12 +177,14 @@ nlohmann::json runStressCase(const StressCase& c, const StressRunOptions& option
         const ValidationResult check = validatePlan(c.map, c.instance, out.plan, c.model);
         if (!check.valid()) {
           run["invalid"] = true;
-          violation("invalid_plan", config, limit,
-                    std::string(violationName(check.violation.kind)) + ": " + check.violation.message);
+          violation(
+              "invalid_plan", config, limit,
+              std::string(violationName(check.violation.kind)) + ": " + check.violation.message);
         }
       } else {
         run["reason"] = shortText(out.reason);
-        if (out.reason.empty()) violation("empty_reason", config, limit, out.status + " without a reason");
+        if (out.reason.empty())
+          violation("empty_reason", config, limit, out.status + " without a reason");
         if (out.status != "TIMEOUT" && out.status != "INFEASIBLE") {
           violation("unexpected_status", config, limit, out.status + ": " + out.reason);
         }
@@ -179,9 +192,10 @@ nlohmann::json runStressCase(const StressCase& c, const StressRunOptions& option
     }
     if (overrun_ms > options.max_overrun_ms) {
       violation("overrun", config, limit,
-                "the solve call took " + std::to_string(limit + overrun_ms / 1000.0) + " s (" + std::to_string(cpu_s) +
-                    " s of CPU) for a time limit of " + std::to_string(limit) + " s, in each of " +
-                    std::to_string(attempts) + " runs (status " +
+                "the solve call took " + std::to_string(limit + overrun_ms / 1000.0) + " s (" +
+                    std::to_string(cpu_s) + " s of CPU) for a time limit of " +
+                    std::to_string(limit) + " s, in each of " + std::to_string(attempts) +
+                    " runs (status " +
                     (out.exception.empty() ? out.status : std::string("EXCEPTION")) + ")");
     }
     runs.push_back(run);
@@ -194,8 +208,10 @@ nlohmann::json runStressCase(const StressCase& c, const StressRunOptions& option
     if (outcomes[i].status != "INFEASIBLE") continue;
     for (std::size_t j = 0; j < outcomes.size(); ++j) {
       if (!outcomes[j].success || runs[j].contains("invalid")) continue;
-      violation("infeasible_contradiction", options.configs[i], stressTimeLimit(c, options.configs[i], options),
-                "INFEASIBLE (" + outcomes[i].reason + ") but " + options.configs[j].name() + " found a valid plan");
+      violation("infeasible_contradiction", options.configs[i],
+                stressTimeLimit(c, options.configs[i], options),
+                "INFEASIBLE (" + outcomes[i].reason + ") but " + options.configs[j].name() +
+                    " found a valid plan");
       break;
     }
   }
@@ -212,8 +228,9 @@ nlohmann::json runStressCase(const StressCase& c, const StressRunOptions& option
         ++checked;
         if (again.plan_hash != outcomes[i].plan_hash) {
           violation("nondeterministic", config, limit,
-                    "the same instance and seed gave two different plans (SOC " + std::to_string(outcomes[i].soc) +
-                        " and " + std::to_string(again.soc) + ")");
+                    "the same instance and seed gave two different plans (SOC " +
+                        std::to_string(outcomes[i].soc) + " and " + std::to_string(again.soc) +
+                        ")");
         }
       } else {
         ++skipped;

@@ -9,10 +9,9 @@
 /// - on a re-run (every few instances), the same seed gives the same plan.
 #include <cstdint>
 #include <functional>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
-
-#include <nlohmann/json.hpp>
 
 #include "fleet_planner/core/resource_limits.h"
 #include "stress_cases.h"
@@ -32,7 +31,7 @@ struct StressConfig {
 
 struct StressRunOptions {
   std::vector<StressConfig> configs;
-  double time_limit = 0.3;      ///< seconds; each run's limit is drawn in [min_time_limit, time_limit]
+  double time_limit = 0.3;  ///< seconds; each run's limit is drawn in [min_time_limit, time_limit]
   double min_time_limit = 0.3;
   int threads = 1;              ///< graphs and relation graphs, per solve
   double max_overrun_ms = 100;  ///< beyond this, a run's overrun is a violation
@@ -40,7 +39,8 @@ struct StressRunOptions {
 };
 
 /// The time limit of `config` on instance `c` (seeded: a re-run gets the same one).
-double stressTimeLimit(const StressCase& c, const StressConfig& config, const StressRunOptions& options);
+double stressTimeLimit(const StressCase& c, const StressConfig& config,
+                       const StressRunOptions& options);
 
 /// Solves `c` with every configuration (twice when `recheck`, comparing the plans) and returns
 /// one JSON object: {"index", "seed", "map", "width", "height", "robots", "backward",

@@ -21,7 +21,9 @@ namespace {
 
 using test::dataPath;
 
-bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+bool contains(const std::string& text, const std::string& part) {
+  return text.find(part) != std::string::npos;
+}
 
 /// Runs `f`, expects a ResourceLimitError for `parameter` whose message contains every part.
 template <class F>
@@ -31,7 +33,8 @@ void expectLimit(F&& f, const std::string& parameter, const std::vector<std::str
     ADD_FAILURE() << "expected a ResourceLimitError for " << parameter;
   } catch (const ResourceLimitError& e) {
     EXPECT_EQ(e.parameter(), parameter) << e.what();
-    for (const auto& part : parts) EXPECT_TRUE(contains(e.what(), part)) << e.what() << "\n  lacks: " << part;
+    for (const auto& part : parts)
+      EXPECT_TRUE(contains(e.what(), part)) << e.what() << "\n  lacks: " << part;
   }
 }
 
@@ -95,14 +98,16 @@ TEST(ResourceLimits, FleetGraphsRefuseMoreRobotsThanTheLimit) {
   ResourceLimits limits;
   limits.max_robots = 2;
   const std::vector<Footprint> three(3, Footprint::circle(0.4));
-  expectLimit([&] { FleetGraphs(map, three, {}, 1, limits); }, "max_robots", {"3 robots", "max_robots=2"});
+  expectLimit([&] { FleetGraphs(map, three, {}, 1, limits); }, "max_robots",
+              {"3 robots", "max_robots=2"});
   limits.max_robots = 3;
   EXPECT_NO_THROW(FleetGraphs(map, three, {}, 1, limits));
 }
 
 TEST(ResourceLimits, GraphEstimateIsTheMemoryTheGraphsTake) {
   const GridMap map = test::freeMap(37, 23);
-  const std::vector<Footprint> fps{Footprint::circle(0.4), Footprint::circle(1.5), Footprint::block(-1, -0.5, 2, 0.5),
+  const std::vector<Footprint> fps{Footprint::circle(0.4), Footprint::circle(1.5),
+                                   Footprint::block(-1, -0.5, 2, 0.5),
                                    Footprint::circle(0.45)};  // the two small circles share a graph
   const FleetGraphs graphs(map, fps);
   ASSERT_EQ(graphs.numGraphs(), 3);
@@ -118,14 +123,18 @@ TEST(ResourceLimits, BigFleetIsRefusedWithAClearErrorInsteadOfAllocating) {
   // state graphs would need about 4.4 GB, more than the default max_memory_mb. FleetGraphs must
   // refuse before building any of them: at once, and without the memory.
   const int side = 4000;
-  const GridMap map(side, side, std::vector<std::uint8_t>(static_cast<std::size_t>(side) * side, 0));
+  const GridMap map(side, side,
+                    std::vector<std::uint8_t>(static_cast<std::size_t>(side) * side, 0));
   std::vector<Footprint> fps;  // 10 lengths x 7 widths: 70 different cell sets, 70 graphs
-  for (int i = 0; i < 70; ++i) fps.push_back(Footprint::block(-0.4, -0.4, 0.4 + i % 10, 0.4 + i / 10));
+  for (int i = 0; i < 70; ++i)
+    fps.push_back(Footprint::block(-0.4, -0.4, 0.4 + i % 10, 0.4 + i / 10));
   const double rss_before = residentMemoryMb();
   const auto t0 = std::chrono::steady_clock::now();
   expectLimit([&] { FleetGraphs(map, fps); }, "max_memory_mb",
-              {"state graphs of 70 robots", "4000 x 4000 map", "70 state graphs", "estimated", "max_memory_mb=4096"});
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+              {"state graphs of 70 robots", "4000 x 4000 map", "70 state graphs", "estimated",
+               "max_memory_mb=4096"});
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   EXPECT_LT(seconds, 5.0);  // about 0.1 s; building the graphs would take minutes
   if (rss_before > 0) {
     EXPECT_LT(residentMemoryMb() - rss_before, 200.0);  // not one 64 MB graph per robot

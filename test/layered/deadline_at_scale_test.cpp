@@ -4,9 +4,8 @@
 // tables, the state graphs) used to ignore the deadline, and a 0.1 s call took 0.2-0.5 s of CPU.
 // Each now checks it. The assertions are on the calling thread's CPU time, which does not depend
 // on how loaded the machine is.
-#include <time.h>
-
 #include <gtest/gtest.h>
+#include <time.h>
 
 #include "fleet_planner/core/instance_check.h"
 #include "fleet_planner/core/instance_generator.h"
@@ -62,8 +61,10 @@ TEST(DeadlineAtScale, LayeredAndRawCallsStopWithinTheBound) {
       const double cpu0 = threadCpuSeconds();
       const LayeredResult r = planLayered(l.map, l.instance, *l.graphs, o, Deadline::in(kLimit));
       const double cpu = threadCpuSeconds() - cpu0;
-      EXPECT_EQ(r.status, SolveStatus::Timeout) << backend << (layered ? " layered: " : " raw: ") << r.reason;
-      EXPECT_LT(cpu, kLimit + kBound) << backend << (layered ? " layered" : " raw") << ": " << r.reason;
+      EXPECT_EQ(r.status, SolveStatus::Timeout)
+          << backend << (layered ? " layered: " : " raw: ") << r.reason;
+      EXPECT_LT(cpu, kLimit + kBound)
+          << backend << (layered ? " layered" : " raw") << ": " << r.reason;
     }
   }
 }

@@ -26,13 +26,16 @@ fleet_planner::FleetFootprints registry() {
 
 Request threeRobots() {
   Request request;
-  request.tasks = {task("amr_1", cx(3), cy(3), 0, cx(19), cy(8), 0), task("amr_2", cx(19), cy(3), 3.14159265, cx(3), cy(8), 3.14159265),
+  request.tasks = {task("amr_1", cx(3), cy(3), 0, cx(19), cy(8), 0),
+                   task("amr_2", cx(19), cy(3), 3.14159265, cx(3), cy(8), 3.14159265),
                    task("tug", cx(11), cy(6), 0, cx(11), cy(3), 1.57079633)};
   request.time_limit = 10.0;
   return request;
 }
 
-bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+bool contains(const std::string& text, const std::string& part) {
+  return text.find(part) != std::string::npos;
+}
 
 TEST(PlanningServiceLimits, MoreRobotsThanMaxRobotsAnswerResourceLimit) {
   PlannerConfig config;
@@ -99,8 +102,10 @@ TEST(PlanningServiceLimits, GraphsBuiltPastTheDeadlineAnswerTimeout) {
   const Response r = service.plan(request, nullptr).response;
   EXPECT_EQ(r.status, Response::TIMEOUT) << r.message;
   EXPECT_TRUE(contains(r.message, "state graphs")) << r.message;
-  for (const auto& robot : r.robots) EXPECT_EQ(robot.status, fleet_planner::RobotResult::NOT_PLANNED) << robot.message;
-  EXPECT_EQ(service.plan(threeRobots(), nullptr).response.status, Response::SUCCESS);  // nothing half-built is kept
+  for (const auto& robot : r.robots)
+    EXPECT_EQ(robot.status, fleet_planner::RobotResult::NOT_PLANNED) << robot.message;
+  EXPECT_EQ(service.plan(threeRobots(), nullptr).response.status,
+            Response::SUCCESS);  // nothing half-built is kept
 }
 
 TEST(PlanningServiceLimits, StatusNameOfResourceLimit) {

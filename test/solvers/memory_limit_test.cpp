@@ -13,7 +13,9 @@
 namespace fleet_planner::test {
 namespace {
 
-bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+bool contains(const std::string& text, const std::string& part) {
+  return text.find(part) != std::string::npos;
+}
 
 // Two one-cell robots that must swap in a closed corridor (row 0, cut off by the wall in row 1)
 // can never pass each other, while six more roam a 20 x 10 room: LA-LaCAM cannot prove that
@@ -53,14 +55,16 @@ TEST(MemoryLimit, EveryBackendReportsTheLimitOnceTheGuardHasTripped) {
     sub.deadline = sub.deadline.withMemoryGuard(&tight);
     const Outcome out = solveWith(name, world, sub);
     EXPECT_EQ(out.result.status, SolveStatus::ResourceLimit) << name << ": " << describe(out);
-    EXPECT_TRUE(contains(out.result.reason, "max_memory_mb=1")) << name << ": " << out.result.reason;
+    EXPECT_TRUE(contains(out.result.reason, "max_memory_mb=1"))
+        << name << ": " << out.result.reason;
   }
 }
 
 TEST(MemoryLimit, DistanceTablesThatWouldNotFitAreRefusedBeforeAllocation) {
   // 600 x 600 cells: 5.5 MB of distances per robot, 44 MB for eight, against 20 MB of room.
   std::vector<Robot> robots;
-  for (int i = 0; i < 8; ++i) robots.push_back(dot("d" + std::to_string(i), {10 * i, 0, 0}, {10 * i, 599, 2}));
+  for (int i = 0; i < 8; ++i)
+    robots.push_back(dot("d" + std::to_string(i), {10 * i, 0, 0}, {10 * i, 599, 2}));
   const World world(freeMap(600, 600), robots);
   const MemoryGuard guard(residentMemoryMb() + 20);
   for (const std::string& name : solverNames()) {
@@ -81,9 +85,10 @@ TEST(MemoryLimit, TheLayeredPlannerAnswersResourceLimit) {
       LayeredOptions options;
       options.backend = backend;
       options.decompose = layered;
-      const LayeredResult r =
-          planLayered(world.map, world.instance, *world.graphs, options, Deadline::in(30).withMemoryGuard(&tight));
-      EXPECT_EQ(r.status, SolveStatus::ResourceLimit) << backend << (layered ? " layered: " : " raw: ") << r.reason;
+      const LayeredResult r = planLayered(world.map, world.instance, *world.graphs, options,
+                                          Deadline::in(30).withMemoryGuard(&tight));
+      EXPECT_EQ(r.status, SolveStatus::ResourceLimit)
+          << backend << (layered ? " layered: " : " raw: ") << r.reason;
       EXPECT_TRUE(contains(r.reason, "max_memory_mb=1")) << r.reason;
       EXPECT_STREQ(statusName(r.status), "RESOURCE_LIMIT");
     }

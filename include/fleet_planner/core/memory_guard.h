@@ -21,7 +21,8 @@ class MemoryGuard {
  public:
   using Clock = std::chrono::steady_clock;
 
-  explicit MemoryGuard(double max_memory_mb, Clock::duration interval = std::chrono::milliseconds(10))
+  explicit MemoryGuard(double max_memory_mb,
+                       Clock::duration interval = std::chrono::milliseconds(10))
       : limit_mb_(max_memory_mb), interval_(interval.count()) {}
   MemoryGuard(const MemoryGuard&) = delete;
   MemoryGuard& operator=(const MemoryGuard&) = delete;

@@ -37,7 +37,8 @@ std::string resourceLimitsProblem(const ResourceLimits& limits);
 
 /// Throws ResourceLimitError (max_map_cells) if a map of width x height cells is larger than
 /// the limit; `what` names the map in the message. Call it before allocating the grid.
-void checkMapCells(long long width, long long height, const ResourceLimits& limits, const std::string& what);
+void checkMapCells(long long width, long long height, const ResourceLimits& limits,
+                   const std::string& what);
 
 /// Throws ResourceLimitError (max_robots) if `robots` is more than the limit.
 void checkRobotCount(long long robots, const ResourceLimits& limits);
