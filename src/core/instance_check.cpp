@@ -64,10 +64,14 @@ std::string SolvabilityReport::summary() const {
   return out;
 }
 
-SolvabilityReport checkSolvability(const Instance& instance, const FleetGraphs& graphs) {
+SolvabilityReport checkSolvability(const Instance& instance, const FleetGraphs& graphs, const Deadline& deadline) {
   SolvabilityReport report;
   const int n = static_cast<int>(instance.robots.size());
   for (int i = 0; i < n; ++i) {
+    if (deadline.expired()) {
+      report.complete = false;
+      return report;
+    }
     const Robot& r = instance.robots[i];
     const StateGraph& g = graphs.graph(i);
     const StateId s = g.id(r.start), t = g.id(r.target);
@@ -84,6 +88,10 @@ SolvabilityReport checkSolvability(const Instance& instance, const FleetGraphs& 
     }
   }
   for (int i = 0; i < n; ++i) {
+    if (deadline.expired()) {
+      report.complete = false;
+      return report;
+    }
     for (int j = i + 1; j < n; ++j) {
       const Robot &a = instance.robots[i], &b = instance.robots[j];
       if (footprintsOverlap(graphs.cells(i), a.start, graphs.cells(j), b.start)) {

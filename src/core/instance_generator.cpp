@@ -1,6 +1,7 @@
 #include "fleet_planner/core/instance_generator.h"
 
 #include <cmath>
+#include <vector>
 #include <string>
 
 #include "fleet_planner/core/collision.h"
@@ -20,8 +21,39 @@ double tenths(Rng& rng, double lo, double hi) {
   return static_cast<double>(rng.uniformInt(a, b)) / 10.0;
 }
 
+// A simple polygon of 3 to 8 vertices: one per angular sector, at a random angle within its
+// sector and a random radius, so that the vertices go round the origin in order and no gap
+// between them reaches half a turn (the polygon is star-shaped about the origin). A quarter of
+// them are then shifted by up to half a cell, which may leave the origin off-centre or outside.
+// Coordinates are multiples of 0.1; a draw that rounding makes degenerate is drawn again.
+Footprint randomPolygon(Rng& rng, const GeneratorOptions& o) {
+  constexpr double kTwoPi = 6.283185307179586;
+  for (int draw = 0; draw < 1000; ++draw) {
+    const int n = static_cast<int>(rng.uniformInt(3, 8));
+    const double sector = kTwoPi / n;
+    const double phase = rng.uniform01() * sector;
+    std::vector<Eigen::Vector2d> points;
+    for (int k = 0; k < n; ++k) {
+      const double angle = phase + sector * (k + 0.4 * (rng.uniform01() - 0.5));
+      const double r = tenths(rng, o.min_size, o.max_size);
+      points.emplace_back(std::round(r * std::cos(angle) * 10) / 10, std::round(r * std::sin(angle) * 10) / 10);
+    }
+    if (rng.uniformInt(0, 3) == 0) {
+      const Eigen::Vector2d shift(tenths(rng, -0.5, 0.5), tenths(rng, -0.5, 0.5));
+      for (auto& p : points) {
+        p = {std::round((p.x() + shift.x()) * 10) / 10, std::round((p.y() + shift.y()) * 10) / 10};
+      }
+    }
+    Footprint f = Footprint::polygon(std::move(points));
+    if (footprintProblem(f).empty()) return f;
+  }
+  throw InvalidInput("generator: no usable polygon with vertices " + std::to_string(o.min_size) + " to " +
+                     std::to_string(o.max_size) + " cells from the origin");
+}
+
 Footprint randomFootprint(Rng& rng, bool circle, const GeneratorOptions& o) {
   if (circle) return Footprint::circle(tenths(rng, o.min_radius, o.max_size));
+  if (o.polygon_share > 0 && rng.uniform01() < o.polygon_share) return randomPolygon(rng, o);
   const double min_x = -tenths(rng, o.min_size, o.max_size);
   const double max_x = tenths(rng, o.min_size, o.max_size);
   const double half_width = tenths(rng, o.min_size, o.max_size);
@@ -32,6 +64,9 @@ Footprint randomFootprint(Rng& rng, bool circle, const GeneratorOptions& o) {
 
 Instance generateInstance(const GridMap& map, const GeneratorOptions& options) {
   if (options.robots < 0) throw InvalidInput("generator: number of robots must not be negative");
+  if (!(options.polygon_share >= 0 && options.polygon_share <= 1)) {
+    throw InvalidInput("generator: polygon_share must be in [0, 1]");
+  }
   Rng rng(options.seed);
   Instance instance;
   std::vector<Footprint> footprints;

@@ -129,7 +129,7 @@ GridMap loadMapServerMap(const std::string& yaml_path, const MapServerOptions& o
   if (!std::ifstream(yaml.image, std::ios::binary)) {
     throw ParseError(yaml_path, yaml.image_line, "cannot open image file '" + yaml.image + "'");
   }
-  const io::PgmImage image = io::readPgm(yaml.image);
+  const io::PgmImage image = io::readPgm(yaml.image, &options.limits);
   const int width = image.width;
   const int height = image.height;
   std::vector<std::uint8_t> blocked(static_cast<std::size_t>(width) * height, 0);
@@ -149,7 +149,7 @@ GridMap loadMapServerMap(const std::string& yaml_path, const MapServerOptions& o
 
 GridMap loadMap(const std::string& path, const MapServerOptions& options) {
   if (io::hasYamlExtension(path)) return loadMapServerMap(path, options);
-  return loadMovingAiMap(path);
+  return loadMovingAiMap(path, options.limits);
 }
 
 }  // namespace fleet_planner

@@ -73,7 +73,7 @@ int parseSide(const std::string& word, const std::string& name, const std::strin
 
 }  // namespace
 
-GridMap parseMovingAiMap(std::istream& in, const std::string& source) {
+GridMap parseMovingAiMap(std::istream& in, const std::string& source, const ResourceLimits& limits) {
   LineReader reader(in);
   std::string line;
   const auto nextHeaderLine = [&](const std::string& expected) {
@@ -111,6 +111,7 @@ GridMap parseMovingAiMap(std::istream& in, const std::string& source) {
                          " cells is larger than the supported 2^28 cells");
   }
 
+  checkMapCells(width, height, limits, source);
   std::vector<std::uint8_t> blocked(static_cast<std::size_t>(width) * height, 0);
   for (int y = 0; y < height; ++y) {
     if (!reader.next(&line)) {
@@ -146,10 +147,10 @@ GridMap parseMovingAiMap(std::istream& in, const std::string& source) {
   return map;
 }
 
-GridMap loadMovingAiMap(const std::string& path) {
+GridMap loadMovingAiMap(const std::string& path, const ResourceLimits& limits) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw ParseError(path, 0, "cannot open file");
-  return parseMovingAiMap(in, path);
+  return parseMovingAiMap(in, path, limits);
 }
 
 }  // namespace fleet_planner

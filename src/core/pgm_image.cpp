@@ -84,7 +84,7 @@ class Cursor {
 
 }  // namespace
 
-PgmImage readPgm(const std::string& path) {
+PgmImage readPgm(const std::string& path, const ResourceLimits* limits) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw ParseError(path, 0, "cannot open file");
   const std::string data((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
@@ -110,6 +110,7 @@ PgmImage readPgm(const std::string& path) {
                      "image of " + std::to_string(image.width) + " x " +
                          std::to_string(image.height) + " pixels is larger than 2^28 pixels");
   }
+  if (limits != nullptr) checkMapCells(image.width, image.height, *limits, path);
   image.pixels.resize(static_cast<std::size_t>(count));
 
   if (binary) {

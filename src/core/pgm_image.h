@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "fleet_planner/core/resource_limits.h"
+
 namespace fleet_planner::io {
 
 struct PgmImage {
@@ -18,7 +20,8 @@ struct PgmImage {
 /// header (and, in P2, between pixel values). Throws ParseError(path, line, reason): "only PGM
 /// images are supported" for any other file type, and for a bad header, a pixel above maxval,
 /// truncated or extra data, or a file that cannot be opened. The line is 0 for binary pixel
-/// data, for truncation and for the file as a whole.
-PgmImage readPgm(const std::string& path);
+/// data, for truncation and for the file as a whole. With `limits`, throws ResourceLimitError
+/// for an image of more than limits->max_map_cells pixels before allocating its pixels.
+PgmImage readPgm(const std::string& path, const ResourceLimits* limits = nullptr);
 
 }  // namespace fleet_planner::io

@@ -44,8 +44,17 @@ Decomposition decompose(const Instance& instance, const FleetGraphs& graphs, con
   const int n = static_cast<int>(instance.robots.size());
   if (n == 0) return d;
   auto t = std::chrono::steady_clock::now();
-  const std::vector<RelationGraph> relations = buildRelationGraphs(instance, graphs, options.threads);
+  const std::vector<RelationGraph> relations = buildRelationGraphs(instance, graphs, options.threads, deadline);
   d.relations_s = since(t);
+  const bool all_built = std::all_of(relations.begin(), relations.end(), [](const RelationGraph& r) { return r.graph; });
+  if (!all_built) {
+    // Out of time before step 1: the whole fleet as one subproblem, legal by definition.
+    d.complete = false;
+    DecompositionSubproblem all;
+    for (int i = 0; i < n; ++i) all.robots.push_back(i);
+    d.subproblems.push_back(std::move(all));
+    return d;
+  }
   detail::DependencyOracle oracle(relations);
   for (int i = 0; i < n; ++i) {
     if (!oracle.agents(i, {}, {})) {

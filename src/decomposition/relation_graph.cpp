@@ -204,7 +204,8 @@ class Builder {
 
 }  // namespace
 
-std::vector<RelationGraph> buildRelationGraphs(const Instance& instance, const FleetGraphs& graphs, int threads) {
+std::vector<RelationGraph> buildRelationGraphs(const Instance& instance, const FleetGraphs& graphs, int threads,
+                                               const Deadline& deadline) {
   const int n = static_cast<int>(instance.robots.size());
   std::vector<std::vector<int>> users(graphs.numGraphs());
   for (int i = 0; i < n; ++i) users[graphs.graphIndex(i)].push_back(i);
@@ -214,6 +215,7 @@ std::vector<RelationGraph> buildRelationGraphs(const Instance& instance, const F
     Scratch scratch;
     for (int k = next++; k < graphs.numGraphs(); k = next++) {
       if (users[k].empty()) continue;
+      if (deadline.expired()) break;  // a component graph takes up to a few hundred ms on a large map
       Builder builder(instance, graphs, users[k].front(), scratch);
       const std::shared_ptr<const ComponentGraph> shared = builder.build();
       for (int i : users[k]) {

@@ -30,7 +30,7 @@ LayeredResult planLayered(const GridMap& map, const Instance& instance, const Fl
   std::vector<SolvedSubproblem> order;
   auto t = std::chrono::steady_clock::now();
   if (options.decompose && n > 0) {
-    const SolvabilityReport report = checkSolvability(instance, graphs);
+    const SolvabilityReport report = checkSolvability(instance, graphs, deadline);
     if (!report.solvable()) {
       result.status = SolveStatus::Infeasible;
       result.reason = report.problems.front().reason;

@@ -43,7 +43,7 @@ Path cheaperPath(const Instance& instance, const FleetGraphs& graphs, const std:
     if (near) sub.moving.push_back({j, paths[j]});
   }
   const SearchSpace space(sub);
-  if (!space.problem().empty()) return {};
+  if (space.stopped() || !space.problem().empty()) return {};  // stopped: the deadline passed
   lower_bound = space.distance(0, space.start(0));
   if (lower_bound >= cost) return {};
   AgentConstraints bound;
@@ -65,7 +65,7 @@ Path idealPath(const Instance& instance, const FleetGraphs& graphs, int robot, c
   sub.graphs = &graphs;
   sub.robots = {robot};
   const SearchSpace space(sub);
-  if (!space.problem().empty()) return {};
+  if (space.stopped() || !space.problem().empty()) return {};  // stopped: the deadline passed
   const LowLevelResult found = spaceTimeAStar(space, 0, AgentConstraints{}, deadline);
   Path path;
   for (StateId s : found.path) path.push_back(space.graph(0).pose(s));

@@ -42,9 +42,10 @@ class Solving {
       if (k == order_.size()) break;
       const SolveResult failed = results_[k] ? *results_[k] : SolveResult{};
       if (deadline_.expired() || order_.size() == 1) {
-        out.status = deadline_.cancelled() ? SolveStatus::Cancelled
-                     : deadline_.expired() ? SolveStatus::Timeout
-                                           : failed.status;
+        out.status = deadline_.outOfMemory() ? SolveStatus::ResourceLimit
+                     : deadline_.cancelled() ? SolveStatus::Cancelled
+                     : deadline_.expired()   ? SolveStatus::Timeout
+                                             : failed.status;
         out.reason = "subproblem " + std::to_string(k) + " (" + idsOf(instance_, order_[k].robots) + "): " +
                      (results_[k] ? failed.reason : std::string("not solved"));
         out.order = order_;

@@ -9,6 +9,8 @@
 #include "fleet_planner/core/errors.h"
 #include "fleet_planner/core/footprint_cells.h"
 #include "fleet_planner/core/instance_check.h"
+#include "fleet_planner/core/memory_guard.h"
+#include "fleet_planner/core/resource_limits.h"
 #include "fleet_planner/layered_planner.h"
 #include "fleet_planner/ros/backend_loader.h"
 #include "fleet_planner/ros/conversions.h"
@@ -128,6 +130,13 @@ bool failOnRobotErrors(PlanCall& call) {
   return true;
 }
 
+/// Robots still OK after a failure that is not theirs (a limit, the deadline) were not planned.
+void markNotPlanned(PlanCall& call) {
+  for (auto& r : call.response.robots) {
+    if (r.status == RobotResultMsg::OK) r.status = RobotResultMsg::NOT_PLANNED, r.message = "not planned: " + call.response.message;
+  }
+}
+
 std::uint8_t responseStatus(SolveStatus status) {
   switch (status) {
     case SolveStatus::Success: return Response::SUCCESS;
@@ -135,6 +144,7 @@ std::uint8_t responseStatus(SolveStatus status) {
     case SolveStatus::Cancelled: return Response::TIMEOUT;
     case SolveStatus::Infeasible: return Response::INFEASIBLE;
     case SolveStatus::InvalidInput: return Response::INVALID_REQUEST;
+    case SolveStatus::ResourceLimit: return Response::RESOURCE_LIMIT;
   }
   return Response::INTERNAL_ERROR;
 }
@@ -142,11 +152,19 @@ std::uint8_t responseStatus(SolveStatus status) {
 }  // namespace
 
 void FleetPlanningService::setMap(const nav_msgs::OccupancyGrid& grid) {
+  try {
+    checkMapCells(grid.info.width, grid.info.height, config_.resourceLimits(), "map");  // before allocating
+  } catch (const ResourceLimitError& e) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    map_refused_ = e.what();  // calls without an earlier map answer RESOURCE_LIMIT with this
+    throw;
+  }
   auto snapshot = std::make_shared<MapSnapshot>();
   snapshot->grid = convert(grid, config_.occupancyPolicy());  // throws InvalidInput: keep the old map
   std::lock_guard<std::mutex> lock(mutex_);
   snapshot->version = ++map_version_;
   map_ = std::move(snapshot);
+  map_refused_.clear();
 }
 
 void FleetPlanningService::setFootprints(const fleet_planner::FleetFootprints& fleet) {
@@ -163,12 +181,13 @@ bool FleetPlanningService::hasMap() const {
 
 std::shared_ptr<const FleetGraphs> FleetPlanningService::graphsFor(const MapSnapshot& map,
                                                                    const std::vector<Footprint>& footprints,
-                                                                   bool& cached) {
+                                                                   bool& cached, const Deadline& deadline) {
   std::lock_guard<std::mutex> lock(graphs_mutex_);
   cached = graphs_.graphs && graphs_.map_version == map.version && graphs_.footprints == footprints;
   if (!cached) {
     graphs_.graphs.reset();  // free the old graphs before building new ones
-    graphs_.graphs = std::make_shared<const FleetGraphs>(map.grid, footprints, ActionModel{}, config_.threads);
+    graphs_.graphs = std::make_shared<const FleetGraphs>(map.grid, footprints, ActionModel{}, config_.threads,
+                                                         config_.resourceLimits(), deadline);  // may throw ResourceLimitError
     graphs_.map_version = map.version;
     graphs_.footprints = footprints;
   }
@@ -181,7 +200,14 @@ PlanCall FleetPlanningService::plan(const Request& request, const StartLookup& l
   call.response.statistics.soc = -1;
   call.response.statistics.makespan = -1;
   try {
+    checkRobotCount(static_cast<long long>(request.tasks.size()), config_.resourceLimits());
     planChecked(request, lookup, cancel, received, call);
+  } catch (const ResourceLimitError& e) {
+    fail(call, Response::RESOURCE_LIMIT, e.what());
+    markNotPlanned(call);
+  } catch (const DeadlineExpired& e) {  // the state graphs were not done in time
+    fail(call, Response::TIMEOUT, std::string("TIMEOUT: ") + e.what());
+    markNotPlanned(call);
   } catch (const InputError& e) {
     fail(call, Response::INVALID_REQUEST, e.what());
   } catch (const std::exception& e) {
@@ -291,11 +317,14 @@ void FleetPlanningService::planChecked(const Request& request, const StartLookup
 
   std::shared_ptr<const MapSnapshot> map;
   std::map<std::string, fleet_planner::RobotFootprint> registry;
+  std::string map_refused;
   {
     std::lock_guard<std::mutex> lock(mutex_);
     map = map_;
     registry = footprints_;
+    map_refused = map_refused_;
   }
+  if (!map && !map_refused.empty()) return fail(call, Response::RESOURCE_LIMIT, "the map was refused: " + map_refused);
   if (!map) return fail(call, Response::NO_MAP, "no map received yet (topic 'map', nav_msgs/OccupancyGrid)");
   call.map = map;
   const GridMap& grid = map->grid;
@@ -375,11 +404,13 @@ void FleetPlanningService::planChecked(const Request& request, const StartLookup
                                "tasks[" + std::to_string(i) + "]"});
     footprints.push_back(tasks[i].footprint);
   }
+  const MemoryGuard memory(config_.max_memory_mb);  // the graphs count against the time limit
+  const Deadline deadline = Deadline::in(time_limit - since(t0), cancel).withMemoryGuard(&memory);
   const auto t_graphs = Clock::now();
   bool cached = false;
-  const auto graphs = graphsFor(*map, footprints, cached);
+  const auto graphs = graphsFor(*map, footprints, cached, deadline);
   res.statistics.precompute_time = cached ? 0.0 : since(t_graphs);
-  const SolvabilityReport report = checkSolvability(instance, *graphs);
+  const SolvabilityReport report = checkSolvability(instance, *graphs, deadline);
   for (const RobotProblem& p : report.problems) {
     auto& result = res.robots[p.robot];
     if (result.status != RobotResultMsg::OK) continue;
@@ -399,7 +430,6 @@ void FleetPlanningService::planChecked(const Request& request, const StartLookup
   options.last_step = request.steps == 0 ? config_.decomposition_steps : request.steps;
   options.threads = config_.threads;
   options.seed = request.seed;
-  const Deadline deadline = Deadline::in(time_limit - since(t0), cancel);
   const LayeredResult result = planLayered(grid, instance, *graphs, options, deadline);
 
   res.statistics.decomposition_time = result.decompose_s;
@@ -467,7 +497,8 @@ void FleetPlanningService::planChecked(const Request& request, const StartLookup
 std::string fleetStatusName(std::uint8_t status) {
   static const char* const kNames[] = {"SUCCESS",         "TIMEOUT",       "INFEASIBLE",    "INVALID_REQUEST",
                                        "NO_MAP",          "UNKNOWN_ROBOT", "UNKNOWN_BACKEND", "INVALID_START",
-                                       "INVALID_GOAL",    "NO_TRANSFORM",  "BUSY",          "INTERNAL_ERROR"};
+                                       "INVALID_GOAL",    "NO_TRANSFORM",  "BUSY",          "INTERNAL_ERROR",
+                                       "RESOURCE_LIMIT"};
   return status < std::size(kNames) ? kNames[status] : "STATUS_" + std::to_string(status);
 }
 

@@ -1,6 +1,7 @@
 #include "fleet_planner/ros/planner_config.h"
 
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 namespace fleet_planner {
@@ -62,6 +63,9 @@ std::vector<std::string> checkPlannerConfig(const PlannerConfig& c) {
   check.range("decomposition_steps", c.decomposition_steps, 1, 4);
   check.range("threads", c.threads, 1, 64);
   check.oneOf("busy_policy", c.busy_policy, {"reject", "queue"});
+  check.range("max_map_cells", c.max_map_cells, 1, std::numeric_limits<int>::max());
+  check.range("max_robots", c.max_robots, 1, std::numeric_limits<int>::max());
+  check.positive("max_memory_mb", c.max_memory_mb);
   check.range("occupied_threshold", c.occupied_threshold, 1, 100);
   check.oneOf("unknown_policy", c.unknown_policy, {"obstacle", "free"});
   check.nonNegative("position_tolerance", c.position_tolerance);

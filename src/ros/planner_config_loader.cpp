@@ -61,10 +61,11 @@ namespace {
 
 const char* const kParameters[] = {
     "backend",          "time_limit",         "max_time_limit",    "decomposition",
-    "decomposition_steps", "threads",         "busy_policy",       "occupied_threshold",
-    "unknown_policy",   "position_tolerance", "heading_tolerance", "seconds_per_step",
-    "map_frame",        "base_frame",         "tf_timeout",        "playback",
-    "planned_frame",    "playback_rate",      "playback_loop"};
+    "decomposition_steps", "threads",         "busy_policy",       "max_map_cells",
+    "max_robots",       "max_memory_mb",      "occupied_threshold", "unknown_policy",
+    "position_tolerance", "heading_tolerance", "seconds_per_step", "map_frame",
+    "base_frame",       "tf_timeout",         "playback",          "planned_frame",
+    "playback_rate",    "playback_loop"};
 
 }  // namespace
 
@@ -92,6 +93,9 @@ PlannerConfig loadPlannerConfig(const ros::NodeHandle& nh) {
   r.read("decomposition_steps", c.decomposition_steps);
   r.read("threads", c.threads);
   r.read("busy_policy", c.busy_policy);
+  r.read("max_map_cells", c.max_map_cells);
+  r.read("max_robots", c.max_robots);
+  r.read("max_memory_mb", c.max_memory_mb);
   r.read("occupied_threshold", c.occupied_threshold);
   r.read("unknown_policy", c.unknown_policy);
   r.read("position_tolerance", c.position_tolerance);

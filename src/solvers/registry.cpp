@@ -61,6 +61,8 @@ const char* statusName(SolveStatus status) {
       return "CANCELLED";
     case SolveStatus::InvalidInput:
       return "INVALID_INPUT";
+    case SolveStatus::ResourceLimit:
+      return "RESOURCE_LIMIT";
   }
   return "?";
 }

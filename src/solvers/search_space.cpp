@@ -3,19 +3,23 @@
 #include <set>
 
 #include "fleet_planner/core/errors.h"
+#include "fleet_planner/core/resource_limits.h"
 
 namespace fleet_planner {
 
 namespace {
 
-std::vector<std::int32_t> restrictedDistances(const SearchSpace& space, int a) {
+// Breadth-first from the target over reversed edges. False (and a partial table) if the deadline
+// passed: it is checked every 16384 states, a few hundred microseconds of work.
+bool restrictedDistances(const SearchSpace& space, int a, const Deadline& deadline, std::vector<std::int32_t>& dist) {
   const StateGraph& g = space.graph(a);
-  std::vector<std::int32_t> dist(g.stateIdCount(), -1);
+  dist.assign(g.stateIdCount(), -1);
   const StateId target = space.target(a);
-  if (!space.allows(a, target, Action::Wait)) return dist;
+  if (!space.allows(a, target, Action::Wait)) return true;
   std::vector<StateId> queue{target};
   dist[target] = 0;
   for (std::size_t head = 0; head < queue.size(); ++head) {
+    if ((head & 16383) == 16383 && deadline.expired()) return false;
     const StateId s = queue[head];
     g.forEachPredecessor(s, [&](Action action, StateId prev) {
       if (dist[prev] < 0 && space.allows(a, prev, action)) {
@@ -24,7 +28,7 @@ std::vector<std::int32_t> restrictedDistances(const SearchSpace& space, int a) {
       }
     });
   }
-  return dist;
+  return true;
 }
 
 }  // namespace
@@ -67,8 +71,18 @@ SearchSpace::SearchSpace(const Subproblem& problem)
     starts_.push_back(graph(a).id(r.start));
     targets_.push_back(graph(a).id(r.target));
   }
+  if (const MemoryGuard* guard = problem.deadline.memoryGuard()) {
+    guard->reserve(static_cast<double>(numAgents()) * static_cast<double>(distanceTableBytes(
+                                                          static_cast<long long>(g0.width()) * g0.height())) /
+                       1048576.0,
+                   "the distance tables of " + std::to_string(numAgents()) + " robots");
+  }
   distances_.resize(numAgents());
   for (int a = 0; a < numAgents() && problem_.empty(); ++a) {
+    if (problem.deadline.expired()) {  // one table per agent: on large maps and fleets, seconds
+      stopped_ = true;
+      return;
+    }
     const Robot& r = instance_->robots[robots_[a]];
     if (!graph(a).valid(starts_[a])) {
       problem_ = label(a) + ": start " + toString(r.start) + " is not a valid state";
@@ -79,7 +93,10 @@ SearchSpace::SearchSpace(const Subproblem& problem)
     } else if (!allows(a, targets_[a], Action::Wait)) {
       problem_ = label(a) + ": target " + toString(r.target) + " overlaps a footprint of another subproblem";
     } else {
-      distances_[a] = restrictedDistances(*this, a);
+      if (!restrictedDistances(*this, a, problem.deadline, distances_[a])) {
+        stopped_ = true;
+        return;
+      }
       if (distances_[a][starts_[a]] < 0) {
         problem_ = label(a) + ": target " + toString(r.target) + " is not reachable from start " + toString(r.start);
       }

@@ -5,6 +5,7 @@
 
 #include "fleet_planner/core/collision.h"
 #include "fleet_planner/core/errors.h"
+#include "fleet_planner/core/resource_limits.h"
 
 namespace fleet_planner {
 
@@ -46,6 +47,9 @@ SolveResult solveWith(const Subproblem& problem, bool moving_allowed,
       SolveStats stats;
       if (!space.problem().empty()) {
         result = make(SolveStatus::Infeasible, space.problem());
+      } else if (space.stopped()) {
+        result = make(problem.deadline.cancelled() ? SolveStatus::Cancelled : SolveStatus::Timeout,
+                      "deadline passed while the distance tables were built");
       } else if (std::string overlap = overlapProblem(space, problem); !overlap.empty()) {
         result = make(SolveStatus::Infeasible, overlap);
       } else if (problem.deadline.expired()) {
@@ -58,10 +62,18 @@ SolveResult solveWith(const Subproblem& problem, bool moving_allowed,
       }
       result.stats = stats;
     }
+  } catch (const ResourceLimitError& e) {
+    result = make(SolveStatus::ResourceLimit, e.what());
   } catch (const InputError& e) {
     result = make(SolveStatus::InvalidInput, e.what());
   } catch (const std::bad_alloc&) {
-    result = make(SolveStatus::Timeout, "out of memory");
+    result = make(SolveStatus::ResourceLimit, "out of memory (an allocation failed)");
+  }
+  // A search stopped by the memory guard says "time limit reached" or names its own budget:
+  // report the limit that stopped it.
+  if (!result.success() && result.status != SolveStatus::ResourceLimit && problem.deadline.outOfMemory()) {
+    result.status = SolveStatus::ResourceLimit;
+    result.reason = problem.deadline.memoryGuard()->reason();
   }
   result.stats.time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return result;

@@ -10,6 +10,7 @@ void addCheckCommand(CLI::App& app);
 void addGraphsCommand(CLI::App& app);
 void addSolveCommand(CLI::App& app);
 void addDecomposeCommand(CLI::App& app);
+void addStressCommand(CLI::App& app);
 
 void setExitCode(int code);
 int exitCode();

@@ -37,6 +37,15 @@ void addProblemOptions(CLI::App* cmd, ProblemOptions& options) {
   cmd->add_flag("--unknown-free", options.unknown_is_free, "map_server maps: unknown cells are free");
 }
 
+void addLimitOptions(CLI::App* cmd, ResourceLimits& limits) {
+  cmd->add_option("--max-map-cells", limits.max_map_cells, "refuse maps of more cells (checked before allocating)")
+      ->check(CLI::PositiveNumber);
+  cmd->add_option("--max-robots", limits.max_robots, "refuse instances of more robots")->check(CLI::PositiveNumber);
+  cmd->add_option("--max-memory-mb", limits.max_memory_mb,
+                  "resident memory limit: graphs are refused and searches stop (RESOURCE_LIMIT) beyond it")
+      ->check(CLI::PositiveNumber);
+}
+
 Problem loadProblem(const ProblemOptions& options) {
   Instance instance = loadInstance(options.instance);
   const std::string map_path = options.map.empty() ? instance.map_file : options.map;
@@ -45,8 +54,10 @@ Problem loadProblem(const ProblemOptions& options) {
   }
   MapServerOptions map_options;
   map_options.unknown_is_free = options.unknown_is_free;
+  map_options.limits = options.limits;
   GridMap map = loadMap(map_path, map_options);
   if (options.agents > 0) instance = selectMixed(instance, options.agents);
+  checkRobotCount(static_cast<long long>(instance.robots.size()), options.limits);
   validateInstance(map, instance);
   return {std::move(map), std::move(instance)};
 }

@@ -8,6 +8,7 @@
 #include "cli_commands.h"
 #include "fleet_planner/core/grid_map.h"
 #include "fleet_planner/core/instance.h"
+#include "fleet_planner/core/resource_limits.h"
 
 namespace fleet_planner::cli {
 
@@ -24,10 +25,14 @@ struct ProblemOptions {
   std::string instance;  ///< benchmark .txt or scenario .yaml
   int agents = 0;        ///< 0: every robot; K: the "K mixed" robots of the pool
   bool unknown_is_free = false;
+  ResourceLimits limits;  ///< max_map_cells and max_robots are checked by loadProblem
 };
 
 /// Registers --map, --instance, --agents and --unknown-free on `cmd`.
 void addProblemOptions(CLI::App* cmd, ProblemOptions& options);
+
+/// Registers --max-map-cells, --max-robots and --max-memory-mb on `cmd` (resource_limits.h).
+void addLimitOptions(CLI::App* cmd, ResourceLimits& limits);
 
 struct Problem {
   GridMap map;
@@ -35,7 +40,8 @@ struct Problem {
 };
 
 /// Loads map and instance, picks the robots and validates them against the map (throws
-/// InputError with file, line or robot on bad input).
+/// InputError with file, line or robot on bad input, ResourceLimitError for a map or fleet over
+/// options.limits).
 Problem loadProblem(const ProblemOptions& options);
 
 /// Prints one JSON object on one line to stdout.

@@ -3,6 +3,7 @@
 
 #include "cli_common.h"
 #include "fleet_planner/core/fleet_graphs.h"
+#include "fleet_planner/core/memory_guard.h"
 #include "fleet_planner/decomposition/decomposition.h"
 #include "fleet_planner/decomposition/legality.h"
 
@@ -19,6 +20,7 @@ void addDecomposeCommand(CLI::App& app) {
   };
   auto o = std::make_shared<Options>();
   addProblemOptions(cmd, o->problem);
+  addLimitOptions(cmd, o->problem.limits);
   cmd->add_option("--steps", o->steps, "decomposition steps: 1, 12, 123 or 1234")
       ->check(CLI::IsMember({"1", "12", "123", "1234"}));
   cmd->add_option("--threads", o->threads, "threads for graphs and relation graphs")->check(CLI::PositiveNumber);
@@ -29,13 +31,15 @@ void addDecomposeCommand(CLI::App& app) {
     std::vector<Footprint> footprints;
     for (const auto& r : p.instance.robots) footprints.push_back(r.footprint);
     const auto t0 = std::chrono::steady_clock::now();
-    const FleetGraphs graphs(p.map, footprints, {}, o->threads);
+    const FleetGraphs graphs(p.map, footprints, {}, o->threads, o->problem.limits);
     const double precompute_s = secondsSince(t0);
     DecompositionOptions options;
     options.last_step = static_cast<int>(o->steps.size());
     options.threads = o->threads;
     const auto t1 = std::chrono::steady_clock::now();
-    const Decomposition d = decompose(p.instance, graphs, options);
+    const MemoryGuard memory(o->problem.limits.max_memory_mb);
+    const Decomposition d = decompose(p.instance, graphs, options, Deadline().withMemoryGuard(&memory));
+    if (memory.exceeded()) throw ResourceLimitError("max_memory_mb", "decomposition stopped: " + memory.reason());
     const double decompose_s = secondsSince(t1);
     nlohmann::json steps = nlohmann::json::array();
     for (const auto& s : d.steps) {

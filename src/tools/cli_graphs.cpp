@@ -12,6 +12,7 @@ void addGraphsCommand(CLI::App& app) {
   auto threads = std::make_shared<int>(1);
   auto backward = std::make_shared<bool>(false);
   addProblemOptions(cmd, *options);
+  addLimitOptions(cmd, options->limits);
   cmd->add_option("--threads", *threads, "threads for graph building")->check(CLI::PositiveNumber);
   cmd->add_flag("--backward", *backward, "allow moving one cell backward");
   cmd->callback([options, threads, backward] {
@@ -23,7 +24,7 @@ void addGraphsCommand(CLI::App& app) {
     const auto t1 = std::chrono::steady_clock::now();
     ActionModel model;
     model.allow_backward = *backward;
-    const FleetGraphs graphs(problem.map, footprints, model, *threads);
+    const FleetGraphs graphs(problem.map, footprints, model, *threads, options->limits);
     const double build_s = secondsSince(t1);
     long long edges = 0;
     for (int i = 0; i < graphs.numRobots(); ++i) edges += graphs.graph(i).numEdges();

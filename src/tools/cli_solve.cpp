@@ -1,8 +1,10 @@
 // `solve`: plan an instance with a backend, raw (the fleet as one subproblem) or layered.
 #include <chrono>
+#include <memory>
 
 #include "cli_common.h"
 #include "fleet_planner/core/fleet_graphs.h"
+#include "fleet_planner/core/memory_guard.h"
 #include "fleet_planner/core/plan_io.h"
 #include "fleet_planner/core/plan_validator.h"
 #include "fleet_planner/layered_planner.h"
@@ -27,6 +29,7 @@ void addSolveCommand(CLI::App& app) {
   };
   auto o = std::make_shared<Options>();
   addProblemOptions(cmd, o->problem);
+  addLimitOptions(cmd, o->problem.limits);
   cmd->add_option("--backend", o->backend, "la_cbs | la_lacam (any registered backend)");
   cmd->add_option("--mode", o->mode, "raw: the fleet as one subproblem; layered: decompose first")
       ->check(CLI::IsMember({"raw", "layered"}));
@@ -44,12 +47,24 @@ void addSolveCommand(CLI::App& app) {
   cmd->add_flag("--details", o->details, "add the solved subproblems (robot ids, status, time, delay) to the JSON");
   cmd->callback([o] {
     const auto t0 = std::chrono::steady_clock::now();
-    const Deadline deadline = Deadline::in(o->time_limit);
+    const MemoryGuard memory(o->problem.limits.max_memory_mb);
+    const Deadline deadline = Deadline::in(o->time_limit).withMemoryGuard(&memory);
     const Problem p = loadProblem(o->problem);
     std::vector<Footprint> footprints;
     for (const auto& r : p.instance.robots) footprints.push_back(r.footprint);
     const auto t1 = std::chrono::steady_clock::now();
-    const FleetGraphs graphs(p.map, footprints, {}, o->threads);
+    // The graphs count against the time limit: a deadline that passes while they are built is a
+    // TIMEOUT like any other.
+    std::unique_ptr<FleetGraphs> graphs;
+    LayeredResult result;
+    try {
+      graphs = std::make_unique<FleetGraphs>(p.map, footprints, ActionModel{}, o->threads, o->problem.limits, deadline);
+    } catch (const DeadlineExpired& e) {
+      result.status = deadline.outOfMemory() ? SolveStatus::ResourceLimit
+                      : deadline.cancelled() ? SolveStatus::Cancelled
+                                             : SolveStatus::Timeout;
+      result.reason = deadline.outOfMemory() ? memory.reason() : e.what();
+    }
     const double precompute_s = secondsSince(t1);
 
     LayeredOptions options;
@@ -61,7 +76,7 @@ void addSolveCommand(CLI::App& app) {
     options.compress = !o->no_compress;
     options.refine = !o->no_refine;
     options.independent_clusters = !o->one_chain;
-    const LayeredResult result = planLayered(p.map, p.instance, graphs, options, deadline);
+    if (graphs) result = planLayered(p.map, p.instance, *graphs, options, deadline);
 
     const int n = static_cast<int>(p.instance.robots.size());
     int largest = 0;

@@ -14,6 +14,7 @@ int main(int argc, char** argv) {
   fleet_planner::cli::addGraphsCommand(app);
   fleet_planner::cli::addSolveCommand(app);
   fleet_planner::cli::addDecomposeCommand(app);
+  fleet_planner::cli::addStressCommand(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

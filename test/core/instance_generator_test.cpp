@@ -10,6 +10,7 @@
 #include "fleet_planner/core/errors.h"
 #include "fleet_planner/core/instance_check.h"
 #include "test_maps.h"
+#include "test_robots.h"
 
 namespace fleet_planner {
 namespace {
@@ -77,6 +78,43 @@ TEST(InstanceGenerator, FullMapGivesAClearError) {
   } catch (const InvalidInput& e) {
     EXPECT_NE(std::string(e.what()).find("could not place robot"), std::string::npos) << e.what();
   }
+}
+
+}  // namespace
+}  // namespace fleet_planner
+
+namespace fleet_planner {
+namespace {
+
+TEST(InstanceGenerator, PolygonShareMakesValidPolygonsAndStillPlacesEveryRobot) {
+  const GridMap map = test::freeMap(30, 30);
+  GeneratorOptions options;
+  options.robots = 12;
+  options.seed = 3;
+  options.polygon_share = 1.0;  // every non-circle robot a polygon
+  const Instance instance = generateInstance(map, options);
+  ASSERT_EQ(instance.robots.size(), 12u);
+  for (std::size_t i = 0; i < instance.robots.size(); ++i) {
+    const Footprint& f = instance.robots[i].footprint;
+    if (i % 2 == 0) {
+      EXPECT_EQ(f.kind, Footprint::Kind::Circle);
+      continue;
+    }
+    ASSERT_EQ(f.kind, Footprint::Kind::Polygon);
+    EXPECT_GE(f.points.size(), 3u);
+    EXPECT_LE(f.points.size(), 8u);
+    EXPECT_EQ(footprintProblem(f), "");
+    for (const auto& p : f.points) EXPECT_TRUE(isTenth(p.x()) && isTenth(p.y())) << p.transpose();
+  }
+  EXPECT_NO_THROW(validateInstance(map, instance));
+  const FleetGraphs graphs(map, test::footprintsOf(instance));
+  EXPECT_TRUE(checkSolvability(instance, graphs).solvable());
+}
+
+TEST(InstanceGenerator, PolygonShareOutsideZeroToOneIsRefused) {
+  GeneratorOptions options;
+  options.polygon_share = 1.5;
+  EXPECT_THROW(generateInstance(test::freeMap(10, 10), options), InvalidInput);
 }
 
 }  // namespace

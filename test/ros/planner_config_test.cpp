@@ -32,6 +32,10 @@ TEST(PlannerConfigCheck, EachBadValueIsNamed) {
       {"decomposition_steps", [](PlannerConfig& c) { c.decomposition_steps = 5; }},
       {"threads", [](PlannerConfig& c) { c.threads = 0; }},
       {"busy_policy", [](PlannerConfig& c) { c.busy_policy = "wait"; }},
+      {"max_map_cells", [](PlannerConfig& c) { c.max_map_cells = 0; }},
+      {"max_robots", [](PlannerConfig& c) { c.max_robots = -5; }},
+      {"max_memory_mb", [](PlannerConfig& c) { c.max_memory_mb = 0; }},
+      {"max_memory_mb", [](PlannerConfig& c) { c.max_memory_mb = NAN; }},
       {"occupied_threshold", [](PlannerConfig& c) { c.occupied_threshold = 101; }},
       {"unknown_policy", [](PlannerConfig& c) { c.unknown_policy = "maybe"; }},
       {"position_tolerance", [](PlannerConfig& c) { c.position_tolerance = -0.1; }},
@@ -57,6 +61,21 @@ TEST(PlannerConfigCheck, EachBadValueIsNamed) {
   EXPECT_EQ(errors.size(), 2u);
   EXPECT_TRUE(mentions(errors, "got -3"));
   EXPECT_TRUE(mentions(errors, "'reject' or 'queue'"));
+}
+
+TEST(PlannerConfigCheck, ResourceLimitsBecomeCoreLimits) {
+  PlannerConfig config;
+  EXPECT_EQ(config.max_map_cells, ResourceLimits{}.max_map_cells);
+  EXPECT_EQ(config.max_robots, ResourceLimits{}.max_robots);
+  EXPECT_EQ(config.max_memory_mb, ResourceLimits{}.max_memory_mb);
+  config.max_map_cells = 1000;
+  config.max_robots = 7;
+  config.max_memory_mb = 512;
+  const ResourceLimits limits = config.resourceLimits();
+  EXPECT_EQ(limits.max_map_cells, 1000);
+  EXPECT_EQ(limits.max_robots, 7);
+  EXPECT_EQ(limits.max_memory_mb, 512);
+  EXPECT_EQ(resourceLimitsProblem(limits), "");
 }
 
 TEST(PlannerConfigCheck, PoliciesBecomeCoreOptions) {

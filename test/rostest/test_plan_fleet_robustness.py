@@ -384,7 +384,7 @@ class PlanFleetRobustnessTest(unittest.TestCase):
             task("c1", pose(3, 3), pose(n - 4, n - 4)),
             task("b1", pose(n - 4, 3, math.pi), pose(4, n - 4, math.pi)),
             task("p1", pose(n // 2, 3), pose(n // 2, n - 4))],
-            backend="la_cbs", time_limit=40.0, seed=1)
+            backend="la_cbs", decomposition=PlanFleetRequest.DECOMPOSITION_RAW, time_limit=40.0, seed=1)
         answers = {}
 
         def plan_slow(planner):

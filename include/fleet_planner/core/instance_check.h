@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "fleet_planner/core/deadline.h"
 #include "fleet_planner/core/fleet_graphs.h"
 #include "fleet_planner/core/footprint_cells.h"
 #include "fleet_planner/core/grid_map.h"
@@ -32,6 +33,9 @@ struct RobotProblem {
 
 struct SolvabilityReport {
   std::vector<RobotProblem> problems;
+  /// False if the deadline passed before every robot was checked: the problems are those found
+  /// until then.
+  bool complete = true;
   bool solvable() const { return problems.empty(); }
   /// The problems, one per line.
   std::string summary() const;
@@ -39,7 +43,8 @@ struct SolvabilityReport {
 
 /// The solvability pre-check, per robot: start and target valid in its state graph, target
 /// reachable from start; and per pair: starts do not overlap, targets do not overlap. Passing
-/// it is necessary, not sufficient, for the instance to be solvable.
-SolvabilityReport checkSolvability(const Instance& instance, const FleetGraphs& graphs);
+/// it is necessary, not sufficient, for the instance to be solvable. The deadline is checked
+/// before each robot (one search of its state graph).
+SolvabilityReport checkSolvability(const Instance& instance, const FleetGraphs& graphs, const Deadline& deadline = {});
 
 }  // namespace fleet_planner

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "fleet_planner/core/grid_map.h"
+#include "fleet_planner/core/resource_limits.h"
 
 namespace fleet_planner {
 
@@ -16,15 +17,19 @@ namespace fleet_planner {
 /// GridMap::source(). Throws ParseError(source, line, reason) for an unknown character (with
 /// its 1-based column), a wrong row length, missing or extra rows, a missing or repeated
 /// header line, or a size that is not an integer in [1, 100000] (or more than 2^28 cells).
-GridMap parseMovingAiMap(std::istream& in, const std::string& source);
+/// Throws ResourceLimitError, before reading the rows, for a header of more than
+/// limits.max_map_cells cells.
+GridMap parseMovingAiMap(std::istream& in, const std::string& source, const ResourceLimits& limits = {});
 
 /// Reads a MovingAI map file (see parseMovingAiMap); source() = `path`. Throws ParseError(path,
 /// 0, ...) if the file cannot be opened.
-GridMap loadMovingAiMap(const std::string& path);
+GridMap loadMovingAiMap(const std::string& path, const ResourceLimits& limits = {});
 
-/// How loadMapServerMap treats cells that are neither free nor occupied.
+/// How loadMapServerMap treats cells that are neither free nor occupied, and (for loadMap, both
+/// formats) the largest map accepted.
 struct MapServerOptions {
   bool unknown_is_free = false;  ///< false: unknown cells are blocked
+  ResourceLimits limits;         ///< max_map_cells: checked on the header, before the grid is allocated
 };
 
 /// Reads a ROS map_server map: a YAML file with the keys

@@ -40,8 +40,9 @@ struct Decomposition {
   std::vector<DecompositionSubproblem> subproblems;  ///< in solving order
   std::vector<DecompositionStep> steps;              ///< statistics after each step run
   double relations_s = 0.0;                          ///< building the relation graphs
-  /// False if the deadline cut it short: then the result is that of the steps completed (step 1
-  /// always runs), which is still legal.
+  /// False if the deadline cut it short: then the result is that of the steps completed, which
+  /// is still legal. Step 1 always runs once the relation graphs are built; if the deadline
+  /// passes while they are built, the result is the whole fleet as one subproblem (no steps).
   bool complete = true;
 
   int largest() const;

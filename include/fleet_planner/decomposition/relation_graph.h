@@ -17,6 +17,7 @@
 #include <memory>
 #include <vector>
 
+#include "fleet_planner/core/deadline.h"
 #include "fleet_planner/core/fleet_graphs.h"
 #include "fleet_planner/core/instance.h"
 
@@ -38,7 +39,9 @@ struct RelationGraph {
 };
 
 /// Builds every robot's relation graph, one component graph per distinct state graph, on up to
-/// `threads` threads (same result for any count).
-std::vector<RelationGraph> buildRelationGraphs(const Instance& instance, const FleetGraphs& graphs, int threads);
+/// `threads` threads (same result for any count). The deadline is checked before each component
+/// graph: once it has passed, no more are started and the robots left out get a null `graph`.
+std::vector<RelationGraph> buildRelationGraphs(const Instance& instance, const FleetGraphs& graphs, int threads,
+                                               const Deadline& deadline = {});
 
 }  // namespace fleet_planner

@@ -54,7 +54,9 @@ class FleetPlanningService {
  public:
   explicit FleetPlanningService(PlannerConfig config) : config_(std::move(config)) {}
 
-  /// Thread-safe; a running call keeps the map it started with.
+  /// Thread-safe; a running call keeps the map it started with. Throws InvalidInput for a bad
+  /// map and ResourceLimitError, before converting it, for one over max_map_cells (the previous
+  /// map stays; without one, calls answer RESOURCE_LIMIT).
   void setMap(const nav_msgs::OccupancyGrid& grid);
   /// Thread-safe; replaces the whole registry.
   void setFootprints(const fleet_planner::FleetFootprints& fleet);
@@ -87,8 +89,9 @@ class FleetPlanningService {
     std::shared_ptr<const FleetGraphs> graphs;
   };
   /// The fleet's state graphs; reused when the map and the footprints are those of the last call.
+  /// Throws DeadlineExpired if the deadline passes while they are built.
   std::shared_ptr<const FleetGraphs> graphsFor(const MapSnapshot& map, const std::vector<Footprint>& footprints,
-                                               bool& cached);
+                                               bool& cached, const Deadline& deadline);
   /// checkRequest()'s checks: false with the answer in `call` for a bad request; otherwise the
   /// resolved time limit and backend name.
   bool checkFields(const fleet_planner::PlanFleet::Request& request, PlanCall& call, double& time_limit,
@@ -100,6 +103,7 @@ class FleetPlanningService {
   mutable std::mutex mutex_;  ///< guards map_ and footprints_
   std::shared_ptr<const MapSnapshot> map_;
   std::uint64_t map_version_ = 0;
+  std::string map_refused_;  ///< why the last map was refused (max_map_cells); empty once one is taken
   std::map<std::string, fleet_planner::RobotFootprint> footprints_;
   std::mutex graphs_mutex_;
   Graphs graphs_;

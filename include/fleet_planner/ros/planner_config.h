@@ -7,6 +7,7 @@
 
 #include <ros/node_handle.h>
 
+#include "fleet_planner/core/resource_limits.h"
 #include "fleet_planner/ros/conversions.h"
 
 namespace fleet_planner {
@@ -22,6 +23,11 @@ struct PlannerConfig {
   int decomposition_steps = 4;       ///< default last decomposition step, 1..4
   int threads = 2;                   ///< threads for state and relation graphs
   std::string busy_policy = "reject";  ///< a call while another plans: "reject" (BUSY) or "queue"
+
+  // Resource limits (core/resource_limits.h): beyond them a call answers RESOURCE_LIMIT.
+  int max_map_cells = 16'000'000;  ///< larger maps are refused when they arrive
+  int max_robots = 1000;           ///< tasks per call
+  double max_memory_mb = 4096;     ///< the node's resident memory while planning, MB
 
   // Map and poses.
   int occupied_threshold = 65;   ///< occupancy values >= this are obstacles (1..100)
@@ -43,6 +49,7 @@ struct PlannerConfig {
 
   OccupancyPolicy occupancyPolicy() const { return {occupied_threshold, unknown_policy == "free"}; }
   PoseTolerance poseTolerance() const { return {position_tolerance, heading_tolerance}; }
+  ResourceLimits resourceLimits() const { return {max_map_cells, max_robots, max_memory_mb}; }
 };
 
 /// Every problem with the configuration, one line each, naming the parameter ("time_limit must be

@@ -17,6 +17,9 @@ class SearchSpace {
  public:
   /// Throws InvalidInput for a malformed subproblem (missing instance or graphs, a robot index
   /// out of range or repeated). Unsolvable robots are reported by problem(), not thrown.
+  /// With a memory guard on the deadline, throws ResourceLimitError (max_memory_mb) if the
+  /// distance tables would not fit, before allocating them. The tables are built until the
+  /// subproblem's deadline: if it passes first, stopped() is true and the space is unusable.
   explicit SearchSpace(const Subproblem& problem);
 
   int numAgents() const { return static_cast<int>(robots_.size()); }
@@ -44,6 +47,9 @@ class SearchSpace {
   /// Empty if every agent has a valid start and target connected in its restricted graph;
   /// otherwise why not, naming the first such robot.
   const std::string& problem() const { return problem_; }
+  /// The deadline passed before every distance table was built (problem() is then only what
+  /// was found until then).
+  bool stopped() const { return stopped_; }
 
  private:
   const Instance* instance_;
@@ -55,6 +61,7 @@ class SearchSpace {
   std::vector<std::vector<std::int32_t>> distances_;
   ReservationTable reservations_;
   std::string problem_;
+  bool stopped_ = false;
 };
 
 }  // namespace fleet_planner

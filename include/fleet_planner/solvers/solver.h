@@ -43,9 +43,11 @@ struct Subproblem {
   long long max_expansions = -1;
 };
 
-enum class SolveStatus { Success, Timeout, Infeasible, Cancelled, InvalidInput };
+/// ResourceLimit: the deadline's memory guard tripped, or a search's tables would not fit in
+/// max_memory_mb (resource_limits.h); the reason names the limit.
+enum class SolveStatus { Success, Timeout, Infeasible, Cancelled, InvalidInput, ResourceLimit };
 
-/// "SUCCESS", "TIMEOUT", "INFEASIBLE", "CANCELLED", "INVALID_INPUT".
+/// "SUCCESS", "TIMEOUT", "INFEASIBLE", "CANCELLED", "INVALID_INPUT", "RESOURCE_LIMIT".
 const char* statusName(SolveStatus status);
 
 struct SolveStats {

@@ -1,0 +1,116 @@
+// The node's resource limits (parameters max_map_cells, max_robots, max_memory_mb): a request
+// over a limit answers RESOURCE_LIMIT with a message naming the parameter, before anything big is
+// allocated, and the service goes on planning requests within the limits.
+#include <gtest/gtest.h>
+
+#include "fleet_planner/core/resource_limits.h"
+#include "fleet_planner/ros/fleet_planning_service.h"
+#include "ros_test_util.h"
+
+namespace fleet_planner::test {
+namespace {
+
+using Request = fleet_planner::PlanFleet::Request;
+using Response = fleet_planner::PlanFleet::Response;
+
+constexpr double kRes = 0.25, kOx = -1.0, kOy = 2.0;
+double cx(int i) { return kOx + (i + 0.5) * kRes; }
+double cy(int j) { return kOy + (j + 0.5) * kRes; }
+
+fleet_planner::FleetFootprints registry() {
+  fleet_planner::FleetFootprints fleet;
+  fleet.robots = {circleFootprint("amr_1", 0.3), circleFootprint("amr_2", 0.2),
+                  blockFootprint("tug", -0.4, 0.4, -0.2, 0.2)};
+  return fleet;
+}
+
+Request threeRobots() {
+  Request request;
+  request.tasks = {task("amr_1", cx(3), cy(3), 0, cx(19), cy(8), 0),
+                   task("amr_2", cx(19), cy(3), 3.14159265, cx(3), cy(8), 3.14159265),
+                   task("tug", cx(11), cy(6), 0, cx(11), cy(3), 1.57079633)};
+  request.time_limit = 10.0;
+  return request;
+}
+
+bool contains(const std::string& text, const std::string& part) {
+  return text.find(part) != std::string::npos;
+}
+
+TEST(PlanningServiceLimits, MoreRobotsThanMaxRobotsAnswerResourceLimit) {
+  PlannerConfig config;
+  config.max_robots = 2;
+  FleetPlanningService service(config);
+  service.setMap(occupancyGrid(24, 12, kRes, kOx, kOy));
+  service.setFootprints(registry());
+  const Response r = service.plan(threeRobots(), nullptr).response;
+  EXPECT_EQ(r.status, Response::RESOURCE_LIMIT);
+  EXPECT_TRUE(contains(r.message, "3 robots")) << r.message;
+  EXPECT_TRUE(contains(r.message, "max_robots=2")) << r.message;
+  EXPECT_TRUE(r.timelines.empty());
+  Request two = threeRobots();
+  two.tasks.pop_back();
+  EXPECT_EQ(service.plan(two, nullptr).response.status, Response::SUCCESS);
+}
+
+TEST(PlanningServiceLimits, AMapOverMaxMapCellsIsRefusedBeforeConversion) {
+  PlannerConfig config;
+  config.max_map_cells = 24 * 12 - 1;
+  FleetPlanningService service(config);
+  service.setFootprints(registry());
+  EXPECT_THROW(service.setMap(occupancyGrid(24, 12, kRes, kOx, kOy)), ResourceLimitError);
+  EXPECT_FALSE(service.hasMap());
+  const Response r = service.plan(threeRobots(), nullptr).response;
+  EXPECT_EQ(r.status, Response::RESOURCE_LIMIT);
+  EXPECT_TRUE(contains(r.message, "24 x 12 = 288 cells")) << r.message;
+  EXPECT_TRUE(contains(r.message, "max_map_cells=287")) << r.message;
+}
+
+TEST(PlanningServiceLimits, ARefusedMapKeepsThePreviousOne) {
+  PlannerConfig config;
+  config.max_map_cells = 24 * 12;
+  FleetPlanningService service(config);
+  service.setFootprints(registry());
+  service.setMap(occupancyGrid(24, 12, kRes, kOx, kOy));
+  EXPECT_THROW(service.setMap(occupancyGrid(25, 12, kRes, kOx, kOy)), ResourceLimitError);
+  EXPECT_EQ(service.plan(threeRobots(), nullptr).response.status, Response::SUCCESS);
+}
+
+TEST(PlanningServiceLimits, GraphsOverMaxMemoryAnswerResourceLimit) {
+  // A limit below what the process already uses: the state graphs are refused before they are
+  // built, with the estimate and the robots in the message.
+  PlannerConfig config;
+  config.max_memory_mb = 1;
+  FleetPlanningService service(config);
+  service.setMap(occupancyGrid(24, 12, kRes, kOx, kOy));
+  service.setFootprints(registry());
+  const Response r = service.plan(threeRobots(), nullptr).response;
+  EXPECT_EQ(r.status, Response::RESOURCE_LIMIT);
+  EXPECT_TRUE(contains(r.message, "max_memory_mb=1")) << r.message;
+  EXPECT_TRUE(contains(r.message, "state graphs of 3 robots")) << r.message;
+  EXPECT_TRUE(contains(r.message, "estimated")) << r.message;
+}
+
+TEST(PlanningServiceLimits, GraphsBuiltPastTheDeadlineAnswerTimeout) {
+  // The call's time limit includes the state graphs: a limit that passes while they are built
+  // is a TIMEOUT (they used to be built in full before the deadline was even set).
+  FleetPlanningService service{PlannerConfig{}};
+  service.setMap(occupancyGrid(24, 12, kRes, kOx, kOy));
+  service.setFootprints(registry());
+  Request request = threeRobots();
+  request.time_limit = 1e-9;
+  const Response r = service.plan(request, nullptr).response;
+  EXPECT_EQ(r.status, Response::TIMEOUT) << r.message;
+  EXPECT_TRUE(contains(r.message, "state graphs")) << r.message;
+  for (const auto& robot : r.robots)
+    EXPECT_EQ(robot.status, fleet_planner::RobotResult::NOT_PLANNED) << robot.message;
+  EXPECT_EQ(service.plan(threeRobots(), nullptr).response.status,
+            Response::SUCCESS);  // nothing half-built is kept
+}
+
+TEST(PlanningServiceLimits, StatusNameOfResourceLimit) {
+  EXPECT_EQ(fleetStatusName(Response::RESOURCE_LIMIT), "RESOURCE_LIMIT");
+}
+
+}  // namespace
+}  // namespace fleet_planner::test
