@@ -84,10 +84,7 @@ class Cursor {
 
 }  // namespace
 
-PgmImage readPgm(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw ParseError(path, 0, "cannot open file");
-  const std::string data((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+PgmImage parsePgm(const std::string& data, const std::string& path) {
   if (data.size() < 2 || data[0] != 'P' || (data[1] != '2' && data[1] != '5') ||
       (data.size() > 2 && !isSpace(data[2]) && data[2] != '#')) {
     throw ParseError(path, 0, "only PGM images are supported (P2 or P5 netpbm graymaps)");
@@ -162,6 +159,13 @@ PgmImage readPgm(const std::string& path) {
                      "extra data after the " + std::to_string(count) + " pixel values");
   }
   return image;
+}
+
+PgmImage readPgm(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw ParseError(path, 0, "cannot open file");
+  const std::string data((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  return parsePgm(data, path);
 }
 
 }  // namespace fleet_planner::io
