@@ -16,6 +16,7 @@ namespace fleet_planner {
 namespace {
 
 using test::dataPath;
+using test::fuzzRegressionPath;
 
 /// Runs `f` and checks that it throws a ParseError naming `file` and `line` (as "file:line:"
 /// unless line is 0) whose message contains `word`.
@@ -141,6 +142,19 @@ TEST(MovingAiMapIo, RejectsMalformedInput) {
     SCOPED_TRACE(c.text);
     expectParseError([&] { parseText(c.text); }, "inline.map", c.line, c.word);
   }
+}
+
+TEST(MovingAiMapIo, HeaderClaimingAHugeMapWithoutRowsIsAnErrorNotAnAllocation) {
+  // Found by fuzz/movingai_map_fuzz.cpp: the reader allocated the 2^28 cells the header claims
+  // (256 MB) before reading a row.
+  expectParseError(
+      [] {
+        loadMovingAiMap(
+            fuzzRegressionPath("movingai_map/header_claims_16384x16384_cells_without_rows"));
+      },
+      "header_claims_16384x16384_cells_without_rows", 4, "file ends after 0 of 16384 map rows");
+  expectParseError([] { parseText("type octile\nheight 16384\nwidth 16384\nmap\n...\n"); },
+                   "inline.map", 5, "map row 0 has 3 characters, expected 16384");
 }
 
 TEST(MapServerMapIo, LoadsP2WithTheImageTopRowAtTheHighestY) {
