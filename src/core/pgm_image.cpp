@@ -107,8 +107,8 @@ PgmImage parsePgm(const std::string& data, const std::string& path) {
                      "image of " + std::to_string(image.width) + " x " +
                          std::to_string(image.height) + " pixels is larger than 2^28 pixels");
   }
-  image.pixels.resize(static_cast<std::size_t>(count));
-
+  // The pixels are allocated only for data that is there: the header alone cannot make the
+  // reader allocate the large image it claims.
   if (binary) {
     if (cursor.atEnd()) throw ParseError(path, 0, "image data is missing");
     cursor.advance();  // the single whitespace byte after maxval
@@ -124,6 +124,7 @@ PgmImage parsePgm(const std::string& data, const std::string& path) {
                        "extra data after the " + std::to_string(needed) + " bytes of pixels");
     }
     const auto* bytes = reinterpret_cast<const unsigned char*>(data.data() + cursor.pos());
+    image.pixels.resize(static_cast<std::size_t>(count));
     for (long long i = 0; i < count; ++i) {
       const unsigned value =
           bytes_per_pixel == 2 ? (bytes[2 * i] << 8) | bytes[2 * i + 1] : bytes[i];
@@ -139,6 +140,8 @@ PgmImage parsePgm(const std::string& data, const std::string& path) {
     return image;
   }
 
+  // Each value takes at least one byte.
+  image.pixels.reserve(std::min(static_cast<std::size_t>(count), cursor.remaining()));
   for (long long i = 0; i < count; ++i) {
     cursor.skipSpaceAndComments();
     if (cursor.atEnd()) {
@@ -150,8 +153,7 @@ PgmImage parsePgm(const std::string& data, const std::string& path) {
       return "value of pixel (column " + std::to_string(i % image.width) + ", row " +
              std::to_string(i / image.width) + ")";
     };
-    image.pixels[static_cast<std::size_t>(i)] =
-        static_cast<std::uint16_t>(cursor.readNumber(name, 0, image.maxval));
+    image.pixels.push_back(static_cast<std::uint16_t>(cursor.readNumber(name, 0, image.maxval)));
   }
   cursor.skipSpaceAndComments();
   if (!cursor.atEnd()) {

@@ -5,6 +5,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -275,6 +276,33 @@ TEST(MapServerMapIo, RejectsBadImages) {
     const std::string yaml =
         scratchFile(c.name + ".yaml", "image: " + c.name + "\nresolution: 1\norigin: [0, 0, 0]\n");
     expectParseError([&] { loadMapServerMap(yaml); }, c.name, c.line, c.word);
+  }
+}
+
+TEST(MapServerMapIo, PgmHeaderClaimingAHugeImageIsAnErrorNotAnAllocation) {
+  // Found by fuzz/map_server_map_fuzz.cpp: the PGM reader allocated the pixels its header claims
+  // (up to 512 MB for 2^28 pixels) before reading any. The fuzz inputs are "<YAML>\0<PGM>"; the
+  // PGM half is loaded here through a good YAML file.
+  struct Case {
+    std::string regression;
+    std::string word;
+  };
+  const std::vector<Case> cases{
+      {"p5_header_claims_25254x2502_pixels_with_4_bytes",
+       "truncated: expected 63185508 bytes of pixels, found 4"},
+      {"p2_header_claims_16384x16384_pixels_with_2_values",
+       "truncated: found 2 of 268435456 pixel values"},
+  };
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.regression);
+    std::ifstream in(fuzzRegressionPath("map_server_map/" + c.regression), std::ios::binary);
+    const std::string input((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    ASSERT_NE(input.find('\0'), std::string::npos);
+    scratchFile(c.regression + ".pgm", input.substr(input.find('\0') + 1));
+    const std::string yaml = scratchFile(c.regression + ".yaml", "image: " + c.regression +
+                                                                     ".pgm\nresolution: 1\n"
+                                                                     "origin: [0, 0, 0]\n");
+    expectParseError([&] { loadMapServerMap(yaml); }, c.regression + ".pgm", 0, c.word);
   }
 }
 
