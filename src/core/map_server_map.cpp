@@ -1,3 +1,5 @@
+#include "map_server_map.h"
+
 #include <cmath>
 #include <cstdint>
 #include <fstream>
@@ -8,7 +10,6 @@
 #include "fleet_planner/core/errors.h"
 #include "fleet_planner/core/map_io.h"
 #include "io_helpers.h"
-#include "map_server_map.h"
 #include "pgm_image.h"
 
 namespace fleet_planner {

@@ -47,6 +47,12 @@ class Cursor {
     }
   }
 
+  /// Skips a `#` comment through the carriage return or newline that ends it.
+  void skipComment() {
+    while (!atEnd() && peek() != '\n' && peek() != '\r') advance();
+    if (!atEnd()) advance();
+  }
+
   /// Reads a decimal number in [low, high] after optional whitespace and comments; `name()`
   /// names it in messages (a function so that the message is only built on error).
   template <typename Name>
@@ -110,8 +116,16 @@ PgmImage parsePgm(const std::string& data, const std::string& path) {
   // The pixels are allocated only for data that is there: the header alone cannot make the
   // reader allocate the large image it claims.
   if (binary) {
+    // The header ends with a single whitespace byte after maxval; comments may come before it
+    // (the newline that ends a comment belongs to the comment).
+    while (!cursor.atEnd() && cursor.peek() == '#') cursor.skipComment();
     if (cursor.atEnd()) throw ParseError(path, 0, "image data is missing");
-    cursor.advance();  // the single whitespace byte after maxval
+    if (!isSpace(cursor.peek())) {
+      throw ParseError(path, cursor.line(),
+                       "expected a whitespace byte between the header and the pixels, found " +
+                           quoted(std::string(1, cursor.peek())));
+    }
+    cursor.advance();
     const std::size_t bytes_per_pixel = image.maxval > 255 ? 2 : 1;
     const std::size_t needed = static_cast<std::size_t>(count) * bytes_per_pixel;
     if (cursor.remaining() < needed) {

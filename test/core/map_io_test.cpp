@@ -268,6 +268,8 @@ TEST(MapServerMapIo, RejectsBadImages) {
       {"p2_bad_maxval.pgm", "P2\n2 1\n70000\n0 0\n", 3, "maxval"},
       {"p2_zero_width.pgm", "P2\n0 1\n255\n", 2, "image width"},
       {"p5_extra_bytes.pgm", std::string("P5\n1 1\n255\n") + "ab", 0, "extra data"},
+      {"p5_comment_then_pixels.pgm", "P5\n1 1\n255# c\n\x07", 4,
+       "expected a whitespace byte between the header and the pixels, found '\\x07'"},
       {"p6_color.pgm", "P6\n1 1\n255\nabc", 0, "only PGM images are supported"},
   };
   for (const Case& c : cases) {
@@ -304,6 +306,16 @@ TEST(MapServerMapIo, PgmHeaderClaimingAHugeImageIsAnErrorNotAnAllocation) {
                                                                      "origin: [0, 0, 0]\n");
     expectParseError([&] { loadMapServerMap(yaml); }, c.regression + ".pgm", 0, c.word);
   }
+}
+
+TEST(MapServerMapIo, P5CommentsBeforeTheRasterAreSkipped) {
+  // netpbm: a comment may end the header; the whitespace byte that delimits the raster follows
+  // the newline that ends the comment.
+  const std::string image =
+      scratchFile("p5_comment.pgm", std::string("P5\n2 1\n255# c\n\n\xff") + '\0');
+  const std::string yaml =
+      scratchFile("p5_comment.yaml", "image: " + image + "\nresolution: 1\norigin: [0, 0, 0]\n");
+  EXPECT_EQ(picture(loadMapServerMap(yaml)), (std::vector<std::string>{".@"}));
 }
 
 TEST(MapServerMapIo, P2CommentsAndAbsoluteImagePathsWork) {
