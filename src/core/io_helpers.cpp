@@ -132,9 +132,7 @@ void writeTextFile(const std::string& path, const std::string& text) {
   if (!out) throw InvalidInput("writing '" + path + "' failed");
 }
 
-YAML::Node loadYamlFile(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw ParseError(path, 0, "cannot open file");
+YAML::Node parseYaml(std::istream& in, const std::string& path) {
   try {
     return YAML::Load(in);
   } catch (const YAML::ParserException& e) {
@@ -142,6 +140,12 @@ YAML::Node loadYamlFile(const std::string& path) {
   } catch (const YAML::Exception& e) {
     throw ParseError(path, e.mark.is_null() ? 0 : e.mark.line + 1, "YAML error: " + e.msg);
   }
+}
+
+YAML::Node loadYamlFile(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw ParseError(path, 0, "cannot open file");
+  return parseYaml(in, path);
 }
 
 int yamlLine(const YAML::Node& node, int fallback) {

@@ -4,6 +4,7 @@
 /// Not part of the public API.
 #include <yaml-cpp/yaml.h>
 
+#include <iosfwd>
 #include <map>
 #include <string>
 #include <vector>
@@ -34,6 +35,10 @@ std::string resolveRelativeTo(const std::string& path, const std::string& relati
 
 /// Writes `text` to `path`; throws InvalidInput naming the path if that fails.
 void writeTextFile(const std::string& path, const std::string& text);
+
+/// Parses YAML text; a syntax error throws ParseError(path, line, reason), `path` naming the
+/// input in messages.
+YAML::Node parseYaml(std::istream& in, const std::string& path);
 
 /// Reads a YAML file; a missing file or a syntax error throws ParseError(path, line, reason).
 YAML::Node loadYamlFile(const std::string& path);

@@ -1,6 +1,9 @@
+#include "map_server_map.h"
+
 #include <cmath>
 #include <cstdint>
 #include <fstream>
+#include <istream>
 #include <string>
 #include <vector>
 
@@ -11,20 +14,11 @@
 
 namespace fleet_planner {
 
+namespace io {
+
 namespace {
 
-enum class Mode { Trinary, Scale, Raw };
-
-struct MapServerYaml {
-  std::string image;  ///< resolved against the YAML's folder
-  int image_line = 0;
-  double resolution = 0.0;
-  MapOrigin origin;
-  bool negate = false;
-  double occupied_thresh = 0.65;
-  double free_thresh = 0.196;
-  Mode mode = Mode::Trinary;
-};
+using Mode = MapServerMode;
 
 double threshold(const io::YamlMapping& fields, const std::string& key, double fallback) {
   const io::YamlField* field = fields.find(key);
@@ -37,8 +31,10 @@ double threshold(const io::YamlMapping& fields, const std::string& key, double f
   return value;
 }
 
-MapServerYaml readMapServerYaml(const std::string& yaml_path) {
-  const YAML::Node root = io::loadYamlFile(yaml_path);
+}  // namespace
+
+MapServerYaml parseMapServerYaml(std::istream& in, const std::string& yaml_path) {
+  const YAML::Node root = io::parseYaml(in, yaml_path);
   const io::YamlMapping fields(
       root, yaml_path, 0, "the map file",
       {"image", "resolution", "origin", "negate", "occupied_thresh", "free_thresh", "mode"});
@@ -105,6 +101,8 @@ MapServerYaml readMapServerYaml(const std::string& yaml_path) {
   return yaml;
 }
 
+namespace {
+
 /// 1 blocked, 0 free, -1 unknown, for one pixel (see loadMapServerMap in map_io.h).
 int occupancy(const MapServerYaml& yaml, unsigned value, unsigned maxval) {
   double p = 0.0;
@@ -124,12 +122,8 @@ int occupancy(const MapServerYaml& yaml, unsigned value, unsigned maxval) {
 
 }  // namespace
 
-GridMap loadMapServerMap(const std::string& yaml_path, const MapServerOptions& options) {
-  const MapServerYaml yaml = readMapServerYaml(yaml_path);
-  if (!std::ifstream(yaml.image, std::ios::binary)) {
-    throw ParseError(yaml_path, yaml.image_line, "cannot open image file '" + yaml.image + "'");
-  }
-  const io::PgmImage image = io::readPgm(yaml.image, &options.limits);
+GridMap mapServerGrid(const MapServerYaml& yaml, const PgmImage& image,
+                      const MapServerOptions& options, const std::string& source) {
   const int width = image.width;
   const int height = image.height;
   std::vector<std::uint8_t> blocked(static_cast<std::size_t>(width) * height, 0);
@@ -143,8 +137,20 @@ GridMap loadMapServerMap(const std::string& yaml_path, const MapServerOptions& o
     }
   }
   GridMap map(width, height, std::move(blocked), yaml.resolution, yaml.origin);
-  map.setSource(yaml_path);
+  map.setSource(source);
   return map;
+}
+
+}  // namespace io
+
+GridMap loadMapServerMap(const std::string& yaml_path, const MapServerOptions& options) {
+  std::ifstream in(yaml_path, std::ios::binary);
+  if (!in) throw ParseError(yaml_path, 0, "cannot open file");
+  const io::MapServerYaml yaml = io::parseMapServerYaml(in, yaml_path);
+  if (!std::ifstream(yaml.image, std::ios::binary)) {
+    throw ParseError(yaml_path, yaml.image_line, "cannot open image file '" + yaml.image + "'");
+  }
+  return io::mapServerGrid(yaml, io::readPgm(yaml.image, &options.limits), options, yaml_path);
 }
 
 GridMap loadMap(const std::string& path, const MapServerOptions& options) {

@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <charconv>
 #include <cstdint>
 #include <fstream>
@@ -112,7 +113,10 @@ GridMap parseMovingAiMap(std::istream& in, const std::string& source, const Reso
   }
 
   checkMapCells(width, height, limits, source);
-  std::vector<std::uint8_t> blocked(static_cast<std::size_t>(width) * height, 0);
+  // The cells grow with the rows actually read, never ahead of them: a header alone cannot make
+  // the reader allocate the large map it claims.
+  const std::size_t cells = static_cast<std::size_t>(width) * height;
+  std::vector<std::uint8_t> blocked;
   for (int y = 0; y < height; ++y) {
     if (!reader.next(&line)) {
       throw ParseError(
@@ -131,10 +135,10 @@ GridMap parseMovingAiMap(std::istream& in, const std::string& source, const Reso
                        "map row " + std::to_string(y) + " has " + std::to_string(line.size()) +
                            " characters, expected " + std::to_string(width));
     }
-    for (int x = 0; x < width; ++x) {
-      blocked[static_cast<std::size_t>(y) * width + x] =
-          static_cast<std::uint8_t>(classify(line[x]));
+    if (blocked.capacity() < blocked.size() + width) {
+      blocked.reserve(std::min(cells, 2 * blocked.capacity() + width));
     }
+    for (int x = 0; x < width; ++x) blocked.push_back(static_cast<std::uint8_t>(classify(line[x])));
   }
   while (reader.next(&line)) {
     if (line.find_first_not_of(" \t") != std::string::npos) {

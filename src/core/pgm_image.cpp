@@ -47,6 +47,12 @@ class Cursor {
     }
   }
 
+  /// Skips a `#` comment through the carriage return or newline that ends it.
+  void skipComment() {
+    while (!atEnd() && peek() != '\n' && peek() != '\r') advance();
+    if (!atEnd()) advance();
+  }
+
   /// Reads a decimal number in [low, high] after optional whitespace and comments; `name()`
   /// names it in messages (a function so that the message is only built on error).
   template <typename Name>
@@ -84,10 +90,7 @@ class Cursor {
 
 }  // namespace
 
-PgmImage readPgm(const std::string& path, const ResourceLimits* limits) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw ParseError(path, 0, "cannot open file");
-  const std::string data((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+PgmImage parsePgm(const std::string& data, const std::string& path, const ResourceLimits* limits) {
   if (data.size() < 2 || data[0] != 'P' || (data[1] != '2' && data[1] != '5') ||
       (data.size() > 2 && !isSpace(data[2]) && data[2] != '#')) {
     throw ParseError(path, 0, "only PGM images are supported (P2 or P5 netpbm graymaps)");
@@ -111,11 +114,19 @@ PgmImage readPgm(const std::string& path, const ResourceLimits* limits) {
                          std::to_string(image.height) + " pixels is larger than 2^28 pixels");
   }
   if (limits != nullptr) checkMapCells(image.width, image.height, *limits, path);
-  image.pixels.resize(static_cast<std::size_t>(count));
-
+  // The pixels are allocated only for data that is there: the header alone cannot make the
+  // reader allocate the large image it claims.
   if (binary) {
+    // The header ends with a single whitespace byte after maxval; comments may come before it
+    // (the newline that ends a comment belongs to the comment).
+    while (!cursor.atEnd() && cursor.peek() == '#') cursor.skipComment();
     if (cursor.atEnd()) throw ParseError(path, 0, "image data is missing");
-    cursor.advance();  // the single whitespace byte after maxval
+    if (!isSpace(cursor.peek())) {
+      throw ParseError(path, cursor.line(),
+                       "expected a whitespace byte between the header and the pixels, found " +
+                           quoted(std::string(1, cursor.peek())));
+    }
+    cursor.advance();
     const std::size_t bytes_per_pixel = image.maxval > 255 ? 2 : 1;
     const std::size_t needed = static_cast<std::size_t>(count) * bytes_per_pixel;
     if (cursor.remaining() < needed) {
@@ -128,6 +139,7 @@ PgmImage readPgm(const std::string& path, const ResourceLimits* limits) {
                        "extra data after the " + std::to_string(needed) + " bytes of pixels");
     }
     const auto* bytes = reinterpret_cast<const unsigned char*>(data.data() + cursor.pos());
+    image.pixels.resize(static_cast<std::size_t>(count));
     for (long long i = 0; i < count; ++i) {
       const unsigned value =
           bytes_per_pixel == 2 ? (bytes[2 * i] << 8) | bytes[2 * i + 1] : bytes[i];
@@ -143,6 +155,8 @@ PgmImage readPgm(const std::string& path, const ResourceLimits* limits) {
     return image;
   }
 
+  // Each value takes at least one byte.
+  image.pixels.reserve(std::min(static_cast<std::size_t>(count), cursor.remaining()));
   for (long long i = 0; i < count; ++i) {
     cursor.skipSpaceAndComments();
     if (cursor.atEnd()) {
@@ -154,8 +168,7 @@ PgmImage readPgm(const std::string& path, const ResourceLimits* limits) {
       return "value of pixel (column " + std::to_string(i % image.width) + ", row " +
              std::to_string(i / image.width) + ")";
     };
-    image.pixels[static_cast<std::size_t>(i)] =
-        static_cast<std::uint16_t>(cursor.readNumber(name, 0, image.maxval));
+    image.pixels.push_back(static_cast<std::uint16_t>(cursor.readNumber(name, 0, image.maxval)));
   }
   cursor.skipSpaceAndComments();
   if (!cursor.atEnd()) {
@@ -163,6 +176,13 @@ PgmImage readPgm(const std::string& path, const ResourceLimits* limits) {
                      "extra data after the " + std::to_string(count) + " pixel values");
   }
   return image;
+}
+
+PgmImage readPgm(const std::string& path, const ResourceLimits* limits) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw ParseError(path, 0, "cannot open file");
+  const std::string data((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  return parsePgm(data, path, limits);
 }
 
 }  // namespace fleet_planner::io

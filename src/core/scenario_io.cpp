@@ -1,3 +1,4 @@
+#include <fstream>
 #include <map>
 #include <set>
 #include <sstream>
@@ -110,8 +111,8 @@ std::string footprintYaml(const Footprint& fp) {
 
 }  // namespace
 
-Instance loadScenario(const std::string& path) {
-  const YAML::Node root = io::loadYamlFile(path);
+Instance parseScenario(std::istream& in, const std::string& path) {
+  const YAML::Node root = io::parseYaml(in, path);
   const io::YamlMapping top(root, path, 0, "the scenario", {"map", "robots"});
   Instance instance;
   if (const io::YamlField* map = top.find("map")) {
@@ -149,6 +150,12 @@ Instance loadScenario(const std::string& path) {
     instance.robots.push_back(std::move(robot));
   }
   return instance;
+}
+
+Instance loadScenario(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw ParseError(path, 0, "cannot open file");
+  return parseScenario(in, path);
 }
 
 std::string scenarioToYaml(const Instance& instance, const std::string& map_file_as_written) {

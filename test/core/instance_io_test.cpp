@@ -181,6 +181,20 @@ TEST(ScenarioIo, ScenarioWithoutMapHasEmptyMapFile) {
   EXPECT_EQ(instance.robots[0].target, (GridPose{1, 1, 1}));
 }
 
+TEST(ScenarioIo, ParsesTextWithThePathForMessagesAndTheMapFolder) {
+  std::istringstream in(
+      "map: ../maps/w.map\n"
+      "robots:\n  - {id: a, footprint: {type: circle, radius: 1}, start: [0, 0, 0], target: [1, "
+      "1, 1]}\n");
+  const Instance instance = parseScenario(in, "scenarios/s.yaml");
+  EXPECT_EQ(instance.map_file, "maps/w.map");
+  ASSERT_EQ(instance.robots.size(), 1u);
+  EXPECT_EQ(instance.robots[0].source, "scenarios/s.yaml:3");
+  std::istringstream bad("robots:\n  - {id: a}\n");
+  expectParseError([&] { parseScenario(bad, "inline.yaml"); }, "inline.yaml", 2,
+                   "has no 'footprint'");
+}
+
 TEST(ScenarioIo, WritesTheDocumentedFormat) {
   Instance instance;
   instance.robots.push_back(

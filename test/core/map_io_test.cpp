@@ -1,10 +1,12 @@
 // Tests of map_io.h: MovingAI maps and ROS map_server maps (YAML + PGM).
 #include "fleet_planner/core/map_io.h"
+#include "fleet_planner/core/resource_limits.h"
 
 #include <gtest/gtest.h>
 
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -16,6 +18,7 @@ namespace fleet_planner {
 namespace {
 
 using test::dataPath;
+using test::fuzzRegressionPath;
 
 /// Runs `f` and checks that it throws a ParseError naming `file` and `line` (as "file:line:"
 /// unless line is 0) whose message contains `word`.
@@ -143,6 +146,24 @@ TEST(MovingAiMapIo, RejectsMalformedInput) {
   }
 }
 
+TEST(MovingAiMapIo, HeaderClaimingAHugeMapWithoutRowsIsAnErrorNotAnAllocation) {
+  // Found by fuzz/movingai_map_fuzz.cpp: the reader allocated the 2^28 cells the header claims
+  // (256 MB) before reading a row. With max_map_cells above the claim, the reader itself must not
+  // allocate ahead of the rows; with the default limit, the header is refused first.
+  ResourceLimits roomy;
+  roomy.max_map_cells = 1'000'000'000;
+  const std::string path = fuzzRegressionPath("movingai_map/header_claims_16384x16384_cells_without_rows");
+  expectParseError([&] { loadMovingAiMap(path, roomy); }, "header_claims_16384x16384_cells_without_rows", 4,
+                   "file ends after 0 of 16384 map rows");
+  expectParseError(
+      [&] {
+        std::istringstream in("type octile\nheight 16384\nwidth 16384\nmap\n...\n");
+        parseMovingAiMap(in, "inline.map", roomy);
+      },
+      "inline.map", 5, "map row 0 has 3 characters, expected 16384");
+  EXPECT_THROW(loadMovingAiMap(path), ResourceLimitError);
+}
+
 TEST(MapServerMapIo, LoadsP2WithTheImageTopRowAtTheHighestY) {
   const GridMap map = loadMapServerMap(dataPath("map_server_p2.yaml"));
   ASSERT_EQ(map.width(), 4);
@@ -253,6 +274,8 @@ TEST(MapServerMapIo, RejectsBadImages) {
       {"p2_bad_maxval.pgm", "P2\n2 1\n70000\n0 0\n", 3, "maxval"},
       {"p2_zero_width.pgm", "P2\n0 1\n255\n", 2, "image width"},
       {"p5_extra_bytes.pgm", std::string("P5\n1 1\n255\n") + "ab", 0, "extra data"},
+      {"p5_comment_then_pixels.pgm", "P5\n1 1\n255# c\n\x07", 4,
+       "expected a whitespace byte between the header and the pixels, found '\\x07'"},
       {"p6_color.pgm", "P6\n1 1\n255\nabc", 0, "only PGM images are supported"},
   };
   for (const Case& c : cases) {
@@ -262,6 +285,46 @@ TEST(MapServerMapIo, RejectsBadImages) {
         scratchFile(c.name + ".yaml", "image: " + c.name + "\nresolution: 1\norigin: [0, 0, 0]\n");
     expectParseError([&] { loadMapServerMap(yaml); }, c.name, c.line, c.word);
   }
+}
+
+TEST(MapServerMapIo, PgmHeaderClaimingAHugeImageIsAnErrorNotAnAllocation) {
+  // Found by fuzz/map_server_map_fuzz.cpp: the PGM reader allocated the pixels its header claims
+  // (up to 512 MB for 2^28 pixels) before reading any. The fuzz inputs are "<YAML>\0<PGM>"; the
+  // PGM half is loaded here through a good YAML file.
+  struct Case {
+    std::string regression;
+    std::string word;
+  };
+  const std::vector<Case> cases{
+      {"p5_header_claims_25254x2502_pixels_with_4_bytes",
+       "truncated: expected 63185508 bytes of pixels, found 4"},
+      {"p2_header_claims_16384x16384_pixels_with_2_values",
+       "truncated: found 2 of 268435456 pixel values"},
+  };
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.regression);
+    std::ifstream in(fuzzRegressionPath("map_server_map/" + c.regression), std::ios::binary);
+    const std::string input((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    ASSERT_NE(input.find('\0'), std::string::npos);
+    scratchFile(c.regression + ".pgm", input.substr(input.find('\0') + 1));
+    const std::string yaml = scratchFile(c.regression + ".yaml", "image: " + c.regression +
+                                                                     ".pgm\nresolution: 1\n"
+                                                                     "origin: [0, 0, 0]\n");
+    MapServerOptions roomy;  // above the claim: the reader itself must not allocate ahead of the data
+    roomy.limits.max_map_cells = 1'000'000'000;
+    expectParseError([&] { loadMapServerMap(yaml, roomy); }, c.regression + ".pgm", 0, c.word);
+    EXPECT_THROW(loadMapServerMap(yaml), ResourceLimitError);  // the default limit refuses the header
+  }
+}
+
+TEST(MapServerMapIo, P5CommentsBeforeTheRasterAreSkipped) {
+  // netpbm: a comment may end the header; the whitespace byte that delimits the raster follows
+  // the newline that ends the comment.
+  const std::string image =
+      scratchFile("p5_comment.pgm", std::string("P5\n2 1\n255# c\n\n\xff") + '\0');
+  const std::string yaml =
+      scratchFile("p5_comment.yaml", "image: " + image + "\nresolution: 1\norigin: [0, 0, 0]\n");
+  EXPECT_EQ(picture(loadMapServerMap(yaml)), (std::vector<std::string>{".@"}));
 }
 
 TEST(MapServerMapIo, P2CommentsAndAbsoluteImagePathsWork) {

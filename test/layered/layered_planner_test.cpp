@@ -37,15 +37,25 @@ GridMap randomMap(std::uint64_t seed) {
   return test::mapFromRows(rows);
 }
 
+/// The robots of each subproblem as solved, in order: the partition after any merges.
+std::vector<std::vector<int>> solvedPartition(const LayeredResult& r) {
+  std::vector<std::vector<int>> parts;
+  for (const auto& s : r.subproblems) parts.push_back(s.robots);
+  return parts;
+}
+
 class LayeredBackends : public ::testing::TestWithParam<std::string> {};
 
 // 500 seeded random instances per backend (1000 plans in all): every returned plan is valid,
 // and on every tenth seed a second run gives the same plan. Instances are only individually
 // solvable (as the paper's generator makes them), so some are jointly unsolvable or too hard
 // for the short limit: how many get solved is a benchmark figure, not asserted here beyond
-// "most" (timing on a loaded machine must not make this test flaky).
+// "most" (timing on a loaded machine must not make this test flaky). For the same reason the
+// rerun is compared only when it solved the same subproblems: a subproblem whose time share ran
+// out in the short run is merged by the safeguard (or decomposition stopped early), which
+// legitimately gives another plan; that happens on a slow machine or under sanitizers.
 TEST_P(LayeredBackends, RandomInstancesGiveValidDeterministicPlans) {
-  int solved = 0, tried = 0, compared = 0;
+  int solved = 0, tried = 0, compared = 0, repartitioned = 0;
   for (std::uint64_t seed = 1; seed <= 500; ++seed) {
     const GridMap map = randomMap(seed);
     GeneratorOptions g;
@@ -70,7 +80,9 @@ TEST_P(LayeredBackends, RandomInstancesGiveValidDeterministicPlans) {
     // Same input, same plan, unless the deadline cut the plan's improvement short.
     if (seed % 10 == 0 && !a.refinement.deadline_hit && !a.compression.deadline_hit) {
       const LayeredResult b = plan(map, in, GetParam(), true, 5.0);
-      if (b.success()) {
+      if (b.success() && solvedPartition(a) != solvedPartition(b)) {
+        ++repartitioned;
+      } else if (b.success()) {
         ++compared;
         EXPECT_EQ(a.plan.paths, b.plan.paths) << "seed " << seed << ": not deterministic";
       }
@@ -80,7 +92,7 @@ TEST_P(LayeredBackends, RandomInstancesGiveValidDeterministicPlans) {
   EXPECT_GE(compared, 20);
   EXPECT_GE(solved, tried / 2) << GetParam() << " solved " << solved << " of " << tried;
   std::cout << "[ random    ] " << GetParam() << ": " << solved << " of " << tried << " solved within 0.25 s, "
-            << compared << " rerun identical\n";
+            << compared << " rerun identical, " << repartitioned << " rerun with other subproblems\n";
 }
 
 // Independent subproblems (LA-LaCAM) or clusters (LA-CBS) run on a thread pool: one thread or

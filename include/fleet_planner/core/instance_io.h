@@ -52,12 +52,17 @@ Instance parseBenchmarkInstance(std::istream& in, const std::string& source);
 /// ...) if the file cannot be opened.
 Instance loadBenchmarkInstance(const std::string& path);
 
-/// Reads a YAML scenario (see above). Instance::map_file is the `map` entry resolved against
-/// the scenario's folder (unchanged if absolute; empty if absent); each robot's source is
+/// Parses a YAML scenario (see above) from `in`. `path` names the input in messages and is the
+/// file whose folder a relative `map` entry is resolved against: Instance::map_file is the `map`
+/// entry resolved that way (unchanged if absolute; empty if absent); each robot's source is
 /// "<path>:<line of its list entry>". Throws ParseError(path, line, reason) for YAML syntax
 /// errors, missing, unknown or repeated keys, missing, empty or duplicate ids, non-numbers,
 /// non-integer positions, headings outside 0..3, unknown footprint types and footprints that
 /// footprintProblem() rejects.
+Instance parseScenario(std::istream& in, const std::string& path);
+
+/// Reads a YAML scenario file (see parseScenario). Throws ParseError(path, 0, ...) if the file
+/// cannot be opened.
 Instance loadScenario(const std::string& path);
 
 /// The instance as a YAML scenario (see above) that loadScenario reads back to the same

@@ -18,7 +18,8 @@ namespace fleet_planner {
 /// its 1-based column), a wrong row length, missing or extra rows, a missing or repeated
 /// header line, or a size that is not an integer in [1, 100000] (or more than 2^28 cells).
 /// Throws ResourceLimitError, before reading the rows, for a header of more than
-/// limits.max_map_cells cells.
+/// limits.max_map_cells cells. Memory grows with the rows read, so a header claiming a large
+/// map without its rows costs nothing but the error.
 GridMap parseMovingAiMap(std::istream& in, const std::string& source, const ResourceLimits& limits = {});
 
 /// Reads a MovingAI map file (see parseMovingAiMap); source() = `path`. Throws ParseError(path,
