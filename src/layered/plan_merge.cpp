@@ -42,11 +42,13 @@ class StepIndex {
   }
 
  private:
-  static std::int64_t key(int bx, int by) { return (static_cast<std::int64_t>(bx) << 32) ^ static_cast<std::uint32_t>(by); }
+  static std::uint64_t key(int bx, int by) {
+    return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(bx)) << 32) | static_cast<std::uint32_t>(by);
+  }
   const Path& path_;
   int bucket_;
   std::vector<Action> actions_;
-  std::unordered_map<std::int64_t, std::vector<int>> buckets_;
+  std::unordered_map<std::uint64_t, std::vector<int>> buckets_;
 };
 
 }  // namespace
