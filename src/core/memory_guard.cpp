@@ -1,26 +1,15 @@
 #include "fleet_planner/core/memory_guard.h"
 
 #include <algorithm>
-#include <cstdio>
 #if defined(__GLIBC__)
 #include <malloc.h>
 #endif
 
+#include "number_format.h"
+
 namespace fleet_planner {
 
 namespace {
-
-std::string mb(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof(buf), "%.1f MB", v);
-  return buf;
-}
-
-std::string number(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof(buf), "%g", v);
-  return buf;
-}
 
 // Resident memory after handing free heap pages back to the system.
 double trimmedResidentMb() {
@@ -50,13 +39,13 @@ void MemoryGuard::reserve(double extra_mb, const std::string& what) const {
   rss = std::max(0.0, trimmedResidentMb());
   if (rss + extra_mb <= limit_mb_) return;
   throw ResourceLimitError(
-      "max_memory_mb", what + " need an estimated " + mb(extra_mb) + " on top of the " + mb(rss) +
-                           " in use, more than max_memory_mb=" + number(limit_mb_));
+      "max_memory_mb", what + " need an estimated " + io::formatMb(extra_mb) + " on top of the " + io::formatMb(rss) +
+                           " in use, more than max_memory_mb=" + io::formatNumber(limit_mb_));
 }
 
 std::string MemoryGuard::reason() const {
-  return "the process's resident memory reached " + mb(peakSampledMb()) +
-         ", over max_memory_mb=" + number(limit_mb_);
+  return "the process's resident memory reached " + io::formatMb(peakSampledMb()) +
+         ", over max_memory_mb=" + io::formatNumber(limit_mb_);
 }
 
 }  // namespace fleet_planner

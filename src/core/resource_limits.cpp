@@ -4,25 +4,14 @@
 
 #include <cmath>
 #include <cstdint>
-#include <cstdio>
+
+#include "number_format.h"
 
 namespace fleet_planner {
 
 namespace {
 
 constexpr double kMb = 1048576.0;
-
-std::string mb(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof(buf), "%.1f MB", v);
-  return buf;
-}
-
-std::string number(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof(buf), "%g", v);
-  return buf;
-}
 
 }  // namespace
 
@@ -32,7 +21,7 @@ std::string resourceLimitsProblem(const ResourceLimits& limits) {
   if (limits.max_robots < 1)
     return "max_robots must be >= 1 (got " + std::to_string(limits.max_robots) + ")";
   if (!(limits.max_memory_mb > 0) || !std::isfinite(limits.max_memory_mb)) {
-    return "max_memory_mb must be > 0 and finite (got " + number(limits.max_memory_mb) + ")";
+    return "max_memory_mb must be > 0 and finite (got " + io::formatNumber(limits.max_memory_mb) + ")";
   }
   return "";
 }
@@ -79,11 +68,11 @@ MemoryEstimate estimateMemory(int width, int height, int robots, int graphs, int
 }
 
 std::string MemoryEstimate::describe() const {
-  std::string out = mb(totalMb()) + " (map " + mb(map_mb) + ", " + std::to_string(graphs) +
-                    " state graph" + (graphs == 1 ? "" : "s") + " " + mb(graphs_mb);
+  std::string out = io::formatMb(totalMb()) + " (map " + io::formatMb(map_mb) + ", " + std::to_string(graphs) +
+                    " state graph" + (graphs == 1 ? "" : "s") + " " + io::formatMb(graphs_mb);
   if (searched_agents > 0) {
     out += ", distance tables of " + std::to_string(searched_agents) + " agent" +
-           (searched_agents == 1 ? "" : "s") + " " + mb(search_mb);
+           (searched_agents == 1 ? "" : "s") + " " + io::formatMb(search_mb);
   }
   return out + ")";
 }
@@ -96,8 +85,8 @@ void checkMemory(const MemoryEstimate& estimate, double in_use_mb, const Resourc
                            what + " on a " + std::to_string(estimate.width) + " x " +
                                std::to_string(estimate.height) + " map need an estimated " +
                                estimate.describe() +
-                               (in_use > 0 ? " on top of the " + mb(in_use) + " in use" : "") +
-                               ", more than max_memory_mb=" + number(limits.max_memory_mb));
+                               (in_use > 0 ? " on top of the " + io::formatMb(in_use) + " in use" : "") +
+                               ", more than max_memory_mb=" + io::formatNumber(limits.max_memory_mb));
 }
 
 double residentMemoryMb() {
