@@ -143,6 +143,11 @@ def problem_args(bench, name, k, subset, seed, folder, cli=None):
     return args + ["--instance", random_subset_file(bench, name, k, seed, folder), "--agents", "0"]
 
 
+def model_args(args):
+    """CLI arguments of the discretisation, the same for solving and checking."""
+    return ["--sweep-tolerance", str(args.sweep_tolerance)] if args.sweep_tolerance else []
+
+
 # --------------------------------------------------------------------------------------------
 # One process per run
 
@@ -244,7 +249,7 @@ def solve_one(args, run, folder):
     plan = os.path.join(folder, "plan.yaml")
     if os.path.exists(plan):
         os.remove(plan)
-    problem = problem_args(args.benchmark_dir, name, k, subset, seed, folder, args.cli)
+    problem = problem_args(args.benchmark_dir, name, k, subset, seed, folder, args.cli) + model_args(args)
     argv = [args.cli, "solve"] + problem + [
         "--backend", backend, "--mode", method, "--time-limit", str(args.time_limit),
         "--seed", str(seed), "--threads", str(args.threads), "--out", plan]
@@ -287,7 +292,7 @@ def validate(args, problem, plan, row):
 
 def decompose_one(args, run, folder):
     name, k, subset, seed = run
-    problem = problem_args(args.benchmark_dir, name, k, subset, seed, folder, args.cli)
+    problem = problem_args(args.benchmark_dir, name, k, subset, seed, folder, args.cli) + model_args(args)
     argv = [args.cli, "decompose"] + problem + ["--steps", "1234", "--threads", str(args.threads)]
     if args.validate:
         argv.append("--check")
@@ -491,6 +496,9 @@ def parse_args(argv):
                    help="also N instances per K from `fleet_planner_cli generate`, seeds 1..N; K may exceed the pool "
                         "(default: 0)")
     p.add_argument("--threads", type=int, default=2, help="CLI --threads (default: 2)")
+    p.add_argument("--sweep-tolerance", type=float, default=0.0,
+                   help="CLI --sweep-tolerance: cells a turn may clip beyond its end poses (default: 0, exact; "
+                        "0.2 makes every pool robot but one reachable, see docs/benchmarking.md)")
     p.add_argument("--no-validate", dest="validate", action="store_false",
                    help="skip the independent check of each plan (and decompose --check)")
     p.add_argument("--note", default="", help="free text kept in <out>.meta.json (e.g. where the CLI was built from)")

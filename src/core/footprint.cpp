@@ -64,11 +64,12 @@ std::string Footprint::describe() const {
       out << "polygon of " << points.size() << " points";
       break;
   }
+  if (sweep_tolerance != 0.0) out << " (sweep tolerance " << sweep_tolerance << ")";
   return out.str();
 }
 
 bool operator==(const Footprint& a, const Footprint& b) {
-  if (a.kind != b.kind) return false;
+  if (a.kind != b.kind || a.sweep_tolerance != b.sweep_tolerance) return false;
   switch (a.kind) {
     case Footprint::Kind::Circle:
       return a.radius == b.radius;
@@ -82,6 +83,8 @@ bool operator==(const Footprint& a, const Footprint& b) {
 
 std::string footprintProblem(const Footprint& f) {
   auto finite = [](double v) { return std::isfinite(v); };
+  if (!(f.sweep_tolerance >= 0.0 && f.sweep_tolerance <= Footprint::kMaxSweepTolerance))
+    return "sweep tolerance must be in [0, 0.25] cells";
   switch (f.kind) {
     case Footprint::Kind::Circle:
       if (!finite(f.radius)) return "circle radius is not a finite number";

@@ -46,9 +46,9 @@ std::vector<Polygon> starHull(const Polygon& polygon) {
   return triangles;
 }
 
-bool anyTriangleCovers(const std::vector<Polygon>& triangles, const Vec2& c) {
+bool anyTriangleCovers(const std::vector<Polygon>& triangles, const Vec2& c, double half) {
   for (const auto& t : triangles) {
-    if (geometry::squareOverlapsPolygon(c, t)) return true;
+    if (geometry::squareOverlapsPolygon(c, t, half)) return true;
   }
   return false;
 }
@@ -56,7 +56,10 @@ bool anyTriangleCovers(const std::vector<Polygon>& triangles, const Vec2& c) {
 // Cells swept by the polygon (at `heading`) turning 90 degrees, counter-clockwise if ccw.
 // The sweep of a star-shaped set is both end poses plus, for every vertex, the sector its
 // radius sweeps: the farthest point of any ray lies on an edge whose maximum is at a vertex.
-CellSet rotationSweep(const Polygon& outline, int heading, bool ccw, double reach) {
+// A cell counts when the sweep reaches more than `tolerance` into it (the cell shrunk by
+// `tolerance` on every side); the caller adds both end poses exactly.
+CellSet rotationSweep(const Polygon& outline, int heading, bool ccw, double reach, double tolerance) {
+  const double half = 0.5 - tolerance;
   const Polygon start = rotated(outline, heading);
   const int end_heading = ccw ? kRotateCcw[heading] : kRotateCw[heading];
   const auto hull_start = starHull(start);
@@ -72,10 +75,10 @@ CellSet rotationSweep(const Polygon& outline, int heading, bool ccw, double reac
     sectors.push_back(ccw ? Sector{r, a, a + geometry::kPi / 2} : Sector{r, a - geometry::kPi / 2, a});
   }
   return cellsWhere(reach, [&](const Vec2& c) {
-    if (geometry::squareOverlapsPolygon(c, start)) return true;
-    if (anyTriangleCovers(hull_start, c) || anyTriangleCovers(hull_end, c)) return true;
+    if (geometry::squareOverlapsPolygon(c, start, half)) return true;
+    if (anyTriangleCovers(hull_start, c, half) || anyTriangleCovers(hull_end, c, half)) return true;
     for (const auto& s : sectors) {
-      if (geometry::squareOverlapsSector(c, s.r, s.a0, s.a1)) return true;
+      if (geometry::squareOverlapsSector(c, s.r, s.a0, s.a1, half)) return true;
     }
     return false;
   });
@@ -117,7 +120,7 @@ FootprintCells::FootprintCells(const Footprint& footprint) : footprint_(footprin
       const int end = ccw ? kRotateCcw[h] : kRotateCw[h];
       CellSet cells = footprint.kind == Footprint::Kind::Circle
                           ? body_[h]
-                          : rotationSweep(outline, h, ccw, reach);
+                          : rotationSweep(outline, h, ccw, reach, footprint.sweep_tolerance);
       // Both end poses are part of every rotation, whatever rounding did above.
       sw[static_cast<int>(a)] = cells.unionWith(body_[h], {0, 0}).unionWith(body_[end], {0, 0});
     }

@@ -9,8 +9,8 @@ namespace {
 
 double cross(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
 
-bool strictlyInsideSquare(const Vec2& p, const Vec2& c) {
-  return std::abs(p.x() - c.x()) < 0.5 - kEps && std::abs(p.y() - c.y()) < 0.5 - kEps;
+bool strictlyInsideSquare(const Vec2& p, const Vec2& c, double half) {
+  return std::abs(p.x() - c.x()) < half - kEps && std::abs(p.y() - c.y()) < half - kEps;
 }
 
 // Orientation of c relative to the line a->b: +1 left, -1 right, 0 collinear (within kEps).
@@ -32,8 +32,9 @@ bool segmentsTouch(const Vec2& p1, const Vec2& p2, const Vec2& q1, const Vec2& q
          (o3 == 0 && onSegment(q1, q2, p1)) || (o4 == 0 && onSegment(q1, q2, p2));
 }
 
-// The arc of radius r over angles [a0, a1] passes through the open square centred at c.
-bool arcEntersSquare(const Vec2& c, double r, double a0, double a1) {
+// The arc of radius r over angles [a0, a1] passes through the open square of half-size `half`
+// centred at c.
+bool arcEntersSquare(const Vec2& c, double half, double r, double a0, double a1) {
   // Between two consecutive crossings of the square's edge lines the arc is either inside or
   // outside the square, so testing the midpoint of every piece is exact.
   std::vector<double> cuts{a0, a1};
@@ -43,14 +44,14 @@ bool arcEntersSquare(const Vec2& c, double r, double a0, double a1) {
     if (t < 0) t += two_pi;
     if (t > 0 && a0 + t < a1) cuts.push_back(a0 + t);
   };
-  for (double lx : {c.x() - 0.5, c.x() + 0.5}) {
+  for (double lx : {c.x() - half, c.x() + half}) {
     if (std::abs(lx) <= r) {
       const double phi = std::acos(lx / r);
       add(phi);
       add(-phi);
     }
   }
-  for (double ly : {c.y() - 0.5, c.y() + 0.5}) {
+  for (double ly : {c.y() - half, c.y() + half}) {
     if (std::abs(ly) <= r) {
       const double phi = std::asin(ly / r);
       add(phi);
@@ -60,7 +61,7 @@ bool arcEntersSquare(const Vec2& c, double r, double a0, double a1) {
   std::sort(cuts.begin(), cuts.end());
   for (std::size_t i = 0; i + 1 < cuts.size(); ++i) {
     const double mid = 0.5 * (cuts[i] + cuts[i + 1]);
-    if (strictlyInsideSquare(Vec2(r * std::cos(mid), r * std::sin(mid)), c)) return true;
+    if (strictlyInsideSquare(Vec2(r * std::cos(mid), r * std::sin(mid)), c, half)) return true;
   }
   return false;
 }
@@ -127,14 +128,14 @@ bool pointInPolygon(const Vec2& p, const std::vector<Vec2>& polygon) {
   return inside;
 }
 
-bool segmentEntersSquare(const Vec2& a, const Vec2& b, const Vec2& c) {
+bool segmentEntersSquare(const Vec2& a, const Vec2& b, const Vec2& c, double half) {
   // Liang-Barsky clip against the closed square; the clipped piece reaches the open interior
   // exactly when its midpoint lies in the interior.
   double t0 = 0.0, t1 = 1.0;
   const Vec2 d = b - a;
   const double p[4] = {-d.x(), d.x(), -d.y(), d.y()};
-  const double q[4] = {a.x() - (c.x() - 0.5), (c.x() + 0.5) - a.x(), a.y() - (c.y() - 0.5),
-                       (c.y() + 0.5) - a.y()};
+  const double q[4] = {a.x() - (c.x() - half), (c.x() + half) - a.x(), a.y() - (c.y() - half),
+                       (c.y() + half) - a.y()};
   for (int k = 0; k < 4; ++k) {
     if (p[k] == 0.0) {
       if (q[k] < 0.0) return false;
@@ -148,13 +149,13 @@ bool segmentEntersSquare(const Vec2& a, const Vec2& b, const Vec2& c) {
     }
     if (t0 > t1) return false;
   }
-  return strictlyInsideSquare(a + 0.5 * (t0 + t1) * d, c);
+  return strictlyInsideSquare(a + 0.5 * (t0 + t1) * d, c, half);
 }
 
-bool squareOverlapsPolygon(const Vec2& c, const std::vector<Vec2>& polygon) {
+bool squareOverlapsPolygon(const Vec2& c, const std::vector<Vec2>& polygon, double half) {
   const std::size_t n = polygon.size();
   for (std::size_t i = 0; i < n; ++i) {
-    if (segmentEntersSquare(polygon[i], polygon[(i + 1) % n], c)) return true;
+    if (segmentEntersSquare(polygon[i], polygon[(i + 1) % n], c, half)) return true;
   }
   // No edge crosses the open square: it is wholly inside or wholly outside the polygon.
   return pointInPolygon(c, polygon);
@@ -167,13 +168,13 @@ bool squareOverlapsDisc(const Vec2& c, double r) {
   return reach > 0 && dx * dx + dy * dy < reach * reach;
 }
 
-bool squareOverlapsSector(const Vec2& c, double r, double a0, double a1) {
+bool squareOverlapsSector(const Vec2& c, double r, double a0, double a1, double half) {
   const Vec2 e0(std::cos(a0), std::sin(a0)), e1(std::cos(a1), std::sin(a1));
   // Sector and square are convex: their interiors meet iff the sector's boundary enters the
   // open square, or the square lies inside the sector (then so does its centre).
-  if (segmentEntersSquare(Vec2::Zero(), r * e0, c)) return true;
-  if (segmentEntersSquare(Vec2::Zero(), r * e1, c)) return true;
-  if (arcEntersSquare(c, r, a0, a1)) return true;
+  if (segmentEntersSquare(Vec2::Zero(), r * e0, c, half)) return true;
+  if (segmentEntersSquare(Vec2::Zero(), r * e1, c, half)) return true;
+  if (arcEntersSquare(c, half, r, a0, a1)) return true;
   return c.norm() < r - kEps && cross(e0, c) > kEps && cross(c, e1) > kEps;
 }
 

@@ -353,6 +353,7 @@ void FleetPlanningService::planChecked(const Request& request, const StartLookup
     std::unique_ptr<FootprintCells> cells;
     try {
       tasks[i].footprint = convert(found->second, grid.resolution());
+      tasks[i].footprint.sweep_tolerance = config_.sweep_tolerance;
       const std::string too_large = footprintSizeProblem(tasks[i].footprint, grid);
       if (!too_large.empty()) {
         robotError(RobotResultMsg::INVALID_FOOTPRINT, too_large);

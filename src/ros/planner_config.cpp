@@ -4,6 +4,8 @@
 #include <limits>
 #include <sstream>
 
+#include "fleet_planner/core/footprint.h"
+
 namespace fleet_planner {
 
 namespace {
@@ -28,6 +30,9 @@ class Checker {
     if (v > 0 && std::isfinite(v) && limit > 0 && std::isfinite(limit) && v > limit) {
       add(name, "must be <= " + std::string(limit_name) + " (" + show(limit) + ")", v);
     }
+  }
+  void between(const char* name, double v, double lo, double hi) {
+    if (!(v >= lo && v <= hi)) add(name, "must be in [" + show(lo) + ", " + show(hi) + "]", v);
   }
   void range(const char* name, int v, int lo, int hi) {
     if (v < lo || v > hi) add(name, "must be in " + show(lo) + ".." + show(hi), v);
@@ -70,6 +75,7 @@ std::vector<std::string> checkPlannerConfig(const PlannerConfig& c) {
   check.oneOf("unknown_policy", c.unknown_policy, {"obstacle", "free"});
   check.nonNegative("position_tolerance", c.position_tolerance);
   check.nonNegative("heading_tolerance", c.heading_tolerance);
+  check.between("sweep_tolerance", c.sweep_tolerance, 0.0, Footprint::kMaxSweepTolerance);
   check.positive("seconds_per_step", c.seconds_per_step);
   check.nonEmpty("map_frame", c.map_frame);
   check.nonEmpty("base_frame", c.base_frame);

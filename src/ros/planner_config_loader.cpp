@@ -65,7 +65,7 @@ const char* const kParameters[] = {
     "max_robots",       "max_memory_mb",      "occupied_threshold", "unknown_policy",
     "position_tolerance", "heading_tolerance", "seconds_per_step", "map_frame",
     "base_frame",       "tf_timeout",         "playback",          "planned_frame",
-    "playback_rate",    "playback_loop"};
+    "playback_rate",    "playback_loop",      "sweep_tolerance"};
 
 }  // namespace
 
@@ -100,6 +100,7 @@ PlannerConfig loadPlannerConfig(const ros::NodeHandle& nh) {
   r.read("unknown_policy", c.unknown_policy);
   r.read("position_tolerance", c.position_tolerance);
   r.read("heading_tolerance", c.heading_tolerance);
+  r.read("sweep_tolerance", c.sweep_tolerance);
   r.read("seconds_per_step", c.seconds_per_step);
   r.read("map_frame", c.map_frame);
   r.read("base_frame", c.base_frame);

@@ -35,6 +35,10 @@ void addProblemOptions(CLI::App* cmd, ProblemOptions& options) {
   cmd->add_option("--agents", options.agents, "use the 'K mixed' robots of the pool (0 = all)")
       ->check(CLI::NonNegativeNumber);
   cmd->add_flag("--unknown-free", options.unknown_is_free, "map_server maps: unknown cells are free");
+  cmd->add_option("--sweep-tolerance", options.sweep_tolerance,
+                  "cells a rotation may clip beyond its end poses (0 = exact sweep; 0.15 reproduces the "
+                  "benchmark pools' discretisation)")
+      ->check(CLI::Range(0.0, Footprint::kMaxSweepTolerance));
 }
 
 void addLimitOptions(CLI::App* cmd, ResourceLimits& limits) {
@@ -57,6 +61,7 @@ Problem loadProblem(const ProblemOptions& options) {
   map_options.limits = options.limits;
   GridMap map = loadMap(map_path, map_options);
   if (options.agents > 0) instance = selectMixed(instance, options.agents);
+  for (Robot& robot : instance.robots) robot.footprint.sweep_tolerance = options.sweep_tolerance;
   checkRobotCount(static_cast<long long>(instance.robots.size()), options.limits);
   validateInstance(map, instance);
   return {std::move(map), std::move(instance)};

@@ -25,10 +25,11 @@ struct ProblemOptions {
   std::string instance;  ///< benchmark .txt or scenario .yaml
   int agents = 0;        ///< 0: every robot; K: the "K mixed" robots of the pool
   bool unknown_is_free = false;
+  double sweep_tolerance = 0.0;  ///< set on every robot's footprint (Footprint::sweep_tolerance)
   ResourceLimits limits;  ///< max_map_cells and max_robots are checked by loadProblem
 };
 
-/// Registers --map, --instance, --agents and --unknown-free on `cmd`.
+/// Registers --map, --instance, --agents, --unknown-free and --sweep-tolerance on `cmd`.
 void addProblemOptions(CLI::App* cmd, ProblemOptions& options);
 
 /// Registers --max-map-cells, --max-robots and --max-memory-mb on `cmd` (resource_limits.h).

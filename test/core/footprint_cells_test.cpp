@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <set>
 #include <utility>
 
@@ -125,6 +126,43 @@ TEST(FootprintCells, PolygonAwayFromOriginSweepsItsStarHull) {
   }
   EXPECT_FALSE(sweep.count({-1, 0}));
   EXPECT_FALSE(sweep.count({3, 1}));  // only touched at its corner (2.5, 0.5)
+}
+
+TEST(FootprintCells, SweepToleranceIgnoresShallowClipsOnly) {
+  // Block [-1.3, 1.1] x [-2, 2] turning +x -> +y: its rear corner (-1.3, -2), 2.385 from the
+  // origin, passes (1.686, -1.686) at -45 degrees, 0.186 deep into cell (2, -2) = [1.5, 2.5] x
+  // [-2.5, -1.5]; likewise the corner (-1.3, 2) passes (-1.686, 1.686) in cell (-2, 2).
+  Footprint block = Footprint::block(-1.3, -2, 1.1, 2);
+  const CellList exact = asList(FootprintCells(block).swept(0, Action::RotateCcw));
+  EXPECT_TRUE(exact.count({2, -2}));
+  EXPECT_TRUE(exact.count({-2, 2}));
+  block.sweep_tolerance = 0.18;
+  EXPECT_EQ(asList(FootprintCells(block).swept(0, Action::RotateCcw)), exact);
+  block.sweep_tolerance = 0.19;
+  const FootprintCells tolerant(block);
+  const CellList relaxed = asList(tolerant.swept(0, Action::RotateCcw));
+  EXPECT_FALSE(relaxed.count({2, -2}));
+  EXPECT_FALSE(relaxed.count({-2, 2}));
+  for (const auto& c : relaxed) EXPECT_TRUE(exact.count(c)) << c.first << "," << c.second;
+  // Both end poses stay whole, and so do moves and bodies.
+  for (int h : {0, 2}) {
+    for (const auto& c : asList(tolerant.body(h))) EXPECT_TRUE(relaxed.count(c));
+  }
+  Footprint exact_block = Footprint::block(-1.3, -2, 1.1, 2);
+  for (int h = 0; h < kHeadings; ++h) {
+    EXPECT_EQ(tolerant.body(h), FootprintCells(exact_block).body(h));
+    EXPECT_EQ(tolerant.swept(h, Action::Forward), FootprintCells(exact_block).swept(h, Action::Forward));
+  }
+  EXPECT_FALSE(tolerant.sameCells(FootprintCells(exact_block)));
+  EXPECT_NE(block, exact_block);
+}
+
+TEST(FootprintCells, SweepToleranceMustBeSmall) {
+  for (double t : {-0.01, 0.26, std::nan("")}) {
+    Footprint f = Footprint::block(-1, -1, 1, 1);
+    f.sweep_tolerance = t;
+    EXPECT_THROW(FootprintCells{f}, InvalidInput) << t;
+  }
 }
 
 TEST(FootprintCells, SameCellsForCirclesThatDiscretiseAlike) {

@@ -40,6 +40,8 @@ TEST(PlannerConfigCheck, EachBadValueIsNamed) {
       {"unknown_policy", [](PlannerConfig& c) { c.unknown_policy = "maybe"; }},
       {"position_tolerance", [](PlannerConfig& c) { c.position_tolerance = -0.1; }},
       {"heading_tolerance", [](PlannerConfig& c) { c.heading_tolerance = INFINITY; }},
+      {"sweep_tolerance", [](PlannerConfig& c) { c.sweep_tolerance = 0.3; }},
+      {"sweep_tolerance", [](PlannerConfig& c) { c.sweep_tolerance = NAN; }},
       {"seconds_per_step", [](PlannerConfig& c) { c.seconds_per_step = 0; }},
       {"map_frame", [](PlannerConfig& c) { c.map_frame.clear(); }},
       {"base_frame", [](PlannerConfig& c) { c.base_frame.clear(); }},

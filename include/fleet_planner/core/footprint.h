@@ -19,6 +19,13 @@ struct Footprint {
   double min_x = 0.0, max_x = 0.0;      ///< block
   double min_y = 0.0, max_y = 0.0;      ///< block
   std::vector<Eigen::Vector2d> points;  ///< polygon, in order
+  /// How deep (cells) a rotation may clip a cell beyond its two end poses before that cell
+  /// counts as swept, in [0, kMaxSweepTolerance]. 0 (the default) is the exact sweep. The
+  /// benchmark pools were generated under a discretisation that ignores such clips (a block's
+  /// corner may pass about 0.1 cell into an obstacle cell while it turns), see
+  /// docs/benchmarking.md; the poses themselves are always exact.
+  double sweep_tolerance = 0.0;
+  static constexpr double kMaxSweepTolerance = 0.25;
 
   static Footprint circle(double radius);
   static Footprint block(double min_x, double min_y, double max_x, double max_y);

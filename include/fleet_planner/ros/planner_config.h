@@ -34,6 +34,9 @@ struct PlannerConfig {
   std::string unknown_policy = "obstacle";  ///< unknown cells (-1): "obstacle" or "free"
   double position_tolerance = 0.1;  ///< metres a pose may be from its cell centre
   double heading_tolerance = 0.2;   ///< radians a yaw may be from a grid heading
+  /// Cells a rotation may clip beyond its end poses, 0..0.25 (Footprint::sweep_tolerance);
+  /// 0 is the exact sweep.
+  double sweep_tolerance = 0.0;
 
   // Time and frames.
   double seconds_per_step = 0.5;      ///< duration of one plan step (a move or a quarter turn)
