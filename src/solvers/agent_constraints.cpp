@@ -17,6 +17,7 @@ void AgentConstraints::add(const Entry& e) {
 void AgentConstraints::forbidAreaFrom(const CellSet& area, Cell origin, int t) {
   areas_.push_back({&area, origin, t});
   max_time_ = std::max(max_time_, t);
+  areas_from_ = std::max(areas_from_, t);
 }
 
 void AgentConstraints::requireCostAbove(int t) {

@@ -204,11 +204,17 @@ class CbsSearch {
 
   LowLevelResult lowLevel(int agent, const AgentConstraints& constraints, const std::vector<StatePath>& others) {
     LowLevelOptions o;
-    o.max_nodes = options_.max_low_level_nodes;
+    o.max_nodes = std::min(options_.max_low_level_nodes, options_.conflict_aware_nodes);
     const ConflictAvoidanceTable cat(space_, others, agent);
     o.conflicts = [&cat](StateId s, Action act, int t) { return cat.conflicts(s, act, t); };
     LowLevelResult ll = spaceTimeAStar(space_, agent, constraints, problem_.deadline, o);
     stats_.low_level_expansions += ll.expansions;
+    if (ll.outcome == LowLevelResult::Outcome::NodeLimit && o.max_nodes < options_.max_low_level_nodes) {
+      o.max_nodes = options_.max_low_level_nodes;
+      o.conflicts = nullptr;
+      ll = spaceTimeAStar(space_, agent, constraints, problem_.deadline, o);
+      stats_.low_level_expansions += ll.expansions;
+    }
     return ll;
   }
 

@@ -1,6 +1,7 @@
 #include "fleet_planner/solvers/space_time_astar.h"
 
 #include <algorithm>
+#include <memory>
 #include <queue>
 #include <unordered_map>
 
@@ -53,6 +54,64 @@ class NodeTable {
   }
   std::vector<std::pair<std::uint64_t, int>> slots_;
   std::size_t size_ = 0;
+};
+
+// Expansions after which a search under area constraints works out where it can still finish.
+constexpr long long kAreaCheckAfter = 10'000;
+
+// Area constraints stay for good once they start, and from `static_from` nothing changes at
+// all. An area may cut the target off or force a long way round, which the plain distance
+// cannot tell: a search would fill space-time up to static_from before it gave up. Backward
+// searches tell it instead, each a lower bound on the steps left:
+// - from `areas_from` (all areas forbidden) on: steps to the target around the areas;
+// - before that: steps, ignoring time, into the region from which the target stays reachable
+//   around the areas, which must be entered by areas_from;
+// - from static_from on: exact steps in the static world (areas and parked obstacles).
+class AreaBounds {
+ public:
+  template <class AroundAreas, class Static>
+  AreaBounds(const SearchSpace& space, int a, StateId target, int areas_from, int static_from,
+             AroundAreas around_areas, Static static_step)
+      : areas_from_(areas_from), static_from_(static_from) {
+    const std::vector<StateId> region = backward(space, a, {target}, around_areas, around_areas_);
+    backward(space, a, region, [&](StateId p, Action act) { return space.allows(a, p, act); }, to_region_);
+    backward(space, a, {target}, static_step, static_);
+  }
+  /// Node (s, t) can still reach the target.
+  bool alive(StateId s, int t) const {
+    if (t >= static_from_) return static_[s] >= 0;
+    if (t >= areas_from_) return around_areas_[s] >= 0;
+    return to_region_[s] >= 0 && t + to_region_[s] <= areas_from_;
+  }
+  /// Steps left from s at time t, at least (s alive).
+  int atLeast(StateId s, int t, int distance) const {
+    if (t >= static_from_) return static_[s];
+    return t >= areas_from_ ? around_areas_[s] : distance;
+  }
+
+ private:
+  // Breadth-first over edges `allowed(p, action)` into the states reached, from `sources`;
+  // returns the states reached.
+  template <class Allowed>
+  static std::vector<StateId> backward(const SearchSpace& space, int a, const std::vector<StateId>& sources,
+                                       Allowed allowed, std::vector<std::int32_t>& steps) {
+    const StateGraph& g = space.graph(a);
+    steps.assign(static_cast<std::size_t>(g.stateIdCount()), -1);
+    std::vector<StateId> queue = sources;
+    for (StateId s : sources) steps[s] = 0;
+    for (std::size_t head = 0; head < queue.size(); ++head) {
+      const StateId s = queue[head];
+      g.forEachPredecessor(s, [&](Action act, StateId p) {
+        if (steps[p] >= 0 || space.distance(a, p) < 0 || !allowed(p, act)) return;
+        steps[p] = steps[s] + 1;
+        queue.push_back(p);
+      });
+    }
+    return queue;
+  }
+
+  int areas_from_, static_from_;
+  std::vector<std::int32_t> around_areas_, to_region_, static_;
 };
 
 struct Node {
@@ -114,7 +173,11 @@ LowLevelResult spaceTimeAStar(const SearchSpace& space, int a, const AgentConstr
   if (constraints.poseForbidden(cells, g.pose(start), 0)) return result;
   // Heuristic: the distance, but never less than the time left until the target can be held
   // (admissible and consistent: it drops by at most one per step).
-  auto heuristic = [&](StateId s, int t) { return std::max(space.distance(a, s), goal_earliest - t); };
+  std::unique_ptr<AreaBounds> bounds;
+  auto heuristic = [&](StateId s, int t) {
+    const int d = bounds ? bounds->atLeast(s, t, space.distance(a, s)) : space.distance(a, s);
+    return std::max(d, goal_earliest - t);
+  };
   nodes.push_back({start, 0, false, 0, heuristic(start, 0), 0, -1});
   seen.set(key(start, 0, false), 0);
   open.push(0);
@@ -128,7 +191,26 @@ LowLevelResult spaceTimeAStar(const SearchSpace& space, int a, const AgentConstr
     open.pop();
     const Node node = nodes[index];
     if (*seen.find(key(node.s, node.t, node.held)) != index) continue;  // superseded by a cheaper duplicate
+    if (bounds && !bounds->alive(node.s, node.g)) continue;
     ++result.expansions;
+    if (!bounds && constraints.hasAreas() && result.expansions == kAreaCheckAfter) {
+      // A time past every time constraint: only the areas speak there.
+      const int late = AgentConstraints::kForever - 1;
+      auto around_areas = [&](StateId p, Action act) {
+        return space.allows(a, p, act) && !constraints.poseForbidden(cells, g.pose(p), late) &&
+               !constraints.stepForbidden(cells, g.pose(p), act, late);
+      };
+      auto static_step = [&](StateId p, Action act) {
+        const GridPose pose = g.pose(p);
+        if (constraints.poseForbidden(cells, pose, static_from)) return false;
+        if (!reservations.empty() && reservations.taken(cells.body(pose.heading), {pose.x, pose.y}, static_from))
+          return false;
+        return space.allows(a, p, act) && !stepBlocked(p, act, static_from);
+      };
+      bounds = std::make_unique<AreaBounds>(space, a, target, constraints.areasFrom(), static_from, around_areas,
+                                            static_step);
+      if (!bounds->alive(node.s, node.g)) continue;
+    }
     if (node.s == target && !node.held && node.g >= goal_earliest) {
       for (int i = index; i >= 0; i = nodes[i].parent) result.path.push_back(nodes[i].s);
       std::reverse(result.path.begin(), result.path.end());
@@ -138,6 +220,7 @@ LowLevelResult spaceTimeAStar(const SearchSpace& space, int a, const AgentConstr
     const int t_next = std::min(node.t + 1, static_from);
     auto consider = [&](Action act, StateId next) {
       if (space.distance(a, next) < 0) return;
+      if (bounds && !bounds->alive(next, node.g + 1)) return;
       const int h = heuristic(next, node.g + 1);
       if (node.g + 1 + h > max_cost) return;  // f bounds the cost from below
       if (!space.allows(a, node.s, act)) return;

@@ -50,6 +50,10 @@ class AgentConstraints {
   /// Latest time any constraint speaks of (a step t counts as t + 1, a cost bound c as c); the
   /// constraints are the same at every later time. -1 if none.
   int maxTime() const { return max_time_; }
+  /// Some area is forbidden for good (the static world differs from the map).
+  bool hasAreas() const { return !areas_.empty(); }
+  /// The time from which every area is forbidden (-1 if there is none).
+  int areasFrom() const { return areas_from_; }
   bool empty() const { return all_.empty() && areas_.empty() && min_cost_ == 0 && max_cost_ == kForever; }
 
  private:
@@ -71,6 +75,7 @@ class AgentConstraints {
   int min_cost_ = 0;
   int max_cost_ = kForever;
   int max_time_ = -1;
+  int areas_from_ = -1;
 };
 
 }  // namespace fleet_planner

@@ -44,6 +44,11 @@ struct LaCbsOptions {
   /// may match): keeps them from eating the time limit on large maps.
   long long pairwise_delay_expansions = 2'000'000;
   long long max_low_level_nodes = 4'000'000;  ///< per low-level call
+  /// Nodes a low-level search may generate while preferring, among equal f, states with fewer
+  /// conflicts with the other paths; beyond, it starts over without that preference (deeper
+  /// first only). Both find the cheapest path; the preference can make the search expand the
+  /// whole conflict-free part of an f-plateau first, millions of nodes on open city maps.
+  long long conflict_aware_nodes = 20'000;
   double max_memory_mb = 2048;                ///< constraint tree paths; beyond: TIMEOUT
   /// Constraint-tree expansions before giving up with TIMEOUT (-1: no limit): a budget that,
   /// unlike a time limit, gives the same outcome on every machine.
