@@ -498,7 +498,7 @@ def parse_args(argv):
     p.add_argument("--threads", type=int, default=2, help="CLI --threads (default: 2)")
     p.add_argument("--sweep-tolerance", type=float, default=0.0,
                    help="CLI --sweep-tolerance: cells a turn may clip beyond its end poses (default: 0, exact; "
-                        "0.2 makes every pool robot but one reachable, see docs/benchmarking.md)")
+                        "0.2 makes every instance of the pools feasible but den520d K=140, see docs/benchmarking.md)")
     p.add_argument("--no-validate", dest="validate", action="store_false",
                    help="skip the independent check of each plan (and decompose --check)")
     p.add_argument("--note", default="", help="free text kept in <out>.meta.json (e.g. where the CLI was built from)")

@@ -430,6 +430,8 @@ void FleetPlanningService::planChecked(const Request& request, const StartLookup
                       : request.decomposition == Request::DECOMPOSITION_LAYERED;
   options.last_step = request.steps == 0 ? config_.decomposition_steps : request.steps;
   options.threads = config_.threads;
+  options.refine = config_.refine;
+  options.compress = config_.compress;
   options.seed = request.seed;
   const LayeredResult result = planLayered(grid, instance, *graphs, options, deadline);
 

@@ -65,7 +65,8 @@ const char* const kParameters[] = {
     "max_robots",       "max_memory_mb",      "occupied_threshold", "unknown_policy",
     "position_tolerance", "heading_tolerance", "seconds_per_step", "map_frame",
     "base_frame",       "tf_timeout",         "playback",          "planned_frame",
-    "playback_rate",    "playback_loop",      "sweep_tolerance"};
+    "playback_rate",    "playback_loop",      "sweep_tolerance",  "refine",
+    "compress"};
 
 }  // namespace
 
@@ -92,6 +93,8 @@ PlannerConfig loadPlannerConfig(const ros::NodeHandle& nh) {
   r.read("decomposition", c.decomposition);
   r.read("decomposition_steps", c.decomposition_steps);
   r.read("threads", c.threads);
+  r.read("refine", c.refine);
+  r.read("compress", c.compress);
   r.read("busy_policy", c.busy_policy);
   r.read("max_map_cells", c.max_map_cells);
   r.read("max_robots", c.max_robots);

@@ -36,8 +36,8 @@ void addProblemOptions(CLI::App* cmd, ProblemOptions& options) {
       ->check(CLI::NonNegativeNumber);
   cmd->add_flag("--unknown-free", options.unknown_is_free, "map_server maps: unknown cells are free");
   cmd->add_option("--sweep-tolerance", options.sweep_tolerance,
-                  "cells a rotation may clip beyond its end poses (0 = exact sweep; 0.15 reproduces the "
-                  "benchmark pools' discretisation)")
+                  "cells a rotation may clip beyond its end poses, 0-0.25 (0 = exact sweep; see "
+                  "docs/benchmarking.md for the benchmark pools)")
       ->check(CLI::Range(0.0, Footprint::kMaxSweepTolerance));
 }
 

@@ -21,7 +21,9 @@ struct PlannerConfig {
   double max_time_limit = 60.0;
   bool decomposition = true;         ///< default: Layered LA-MAPF (false: raw)
   int decomposition_steps = 4;       ///< default last decomposition step, 1..4
-  int threads = 2;                   ///< threads for state and relation graphs
+  int threads = 2;                   ///< threads for graphs and for solving subproblems
+  bool refine = true;                ///< replan delayed robots after merging (plan_refinement.h)
+  bool compress = true;              ///< drop the waits no conflict needs (plan_compression.h)
   std::string busy_policy = "reject";  ///< a call while another plans: "reject" (BUSY) or "queue"
 
   // Resource limits (core/resource_limits.h): beyond them a call answers RESOURCE_LIMIT.
