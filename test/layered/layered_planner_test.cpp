@@ -7,10 +7,9 @@
 #include <iostream>
 
 #include "fleet_planner/core/errors.h"
-#include "fleet_planner/core/instance_generator.h"
 #include "fleet_planner/core/plan_validator.h"
-#include "fleet_planner/core/random.h"
 #include "fleet_planner/solvers/registry.h"
+#include "random_worlds.h"
 #include "test_maps.h"
 #include "test_robots.h"
 
@@ -29,13 +28,7 @@ LayeredResult plan(const GridMap& map, const Instance& in, const std::string& ba
   return planLayered(map, in, graphs, o, Deadline::in(seconds));
 }
 
-GridMap randomMap(std::uint64_t seed) {
-  Rng rng(seed);
-  const int w = 16 + static_cast<int>(rng.uniformInt(0, 8)), h = 14 + static_cast<int>(rng.uniformInt(0, 8));
-  std::vector<std::string> rows(h, std::string(w, '.'));
-  for (int k = 0; k < w * h / 12; ++k) rows[rng.uniformInt(0, h - 1)][rng.uniformInt(0, w - 1)] = '@';
-  return test::mapFromRows(rows);
-}
+GridMap randomMap(std::uint64_t seed) { return test::randomMap(seed, 16, 14, 8, 12); }
 
 /// The robots of each subproblem as solved, in order: the partition after any merges.
 std::vector<std::vector<int>> solvedPartition(const LayeredResult& r) {
@@ -58,16 +51,9 @@ TEST_P(LayeredBackends, RandomInstancesGiveValidDeterministicPlans) {
   int solved = 0, tried = 0, compared = 0, repartitioned = 0;
   for (std::uint64_t seed = 1; seed <= 500; ++seed) {
     const GridMap map = randomMap(seed);
-    GeneratorOptions g;
-    g.robots = 2 + static_cast<int>(seed % 6);
-    g.seed = seed;
-    g.max_size = 1.0;
-    Instance in;
-    try {
-      in = generateInstance(map, g);
-    } catch (const InvalidInput&) {
-      continue;
-    }
+    const std::optional<Instance> fleet = test::randomFleet(map, 2 + static_cast<int>(seed % 6), seed);
+    if (!fleet) continue;
+    const Instance& in = *fleet;
     ++tried;
     const LayeredResult a = plan(map, in, GetParam(), true, 0.25);
     if (!a.success()) {
@@ -101,16 +87,9 @@ TEST_P(LayeredBackends, ThreadsDoNotChangeThePlan) {
   int compared = 0;
   for (std::uint64_t seed = 1; seed <= 80 && compared < 15; ++seed) {
     const GridMap map = randomMap(seed + 1000);
-    GeneratorOptions g;
-    g.robots = 4 + static_cast<int>(seed % 5);
-    g.seed = seed;
-    g.max_size = 1.0;
-    Instance in;
-    try {
-      in = generateInstance(map, g);
-    } catch (const InvalidInput&) {
-      continue;
-    }
+    const std::optional<Instance> fleet = test::randomFleet(map, 4 + static_cast<int>(seed % 5), seed);
+    if (!fleet) continue;
+    const Instance& in = *fleet;
     const FleetGraphs graphs(map, footprintsOf(in));
     LayeredOptions o;
     o.backend = GetParam();

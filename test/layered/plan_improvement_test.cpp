@@ -4,13 +4,11 @@
 
 #include <iostream>
 
-#include "fleet_planner/core/errors.h"
-#include "fleet_planner/core/instance_generator.h"
 #include "fleet_planner/core/plan_validator.h"
-#include "fleet_planner/core/random.h"
 #include "fleet_planner/layered/plan_compression.h"
 #include "fleet_planner/layered/plan_refinement.h"
 #include "fleet_planner/layered_planner.h"
+#include "random_worlds.h"
 #include "test_maps.h"
 #include "test_robots.h"
 
@@ -119,21 +117,10 @@ TEST(PlanRefinement, KeepsAPathThatOthersForce) {
 TEST(PlanImprovement, NeverWorseThanTheMergedPlan) {
   int compared = 0, improved = 0;
   for (std::uint64_t seed = 1; seed <= 60; ++seed) {
-    Rng rng(seed);
-    const int w = 14 + static_cast<int>(rng.uniformInt(0, 6)), h = 12 + static_cast<int>(rng.uniformInt(0, 6));
-    std::vector<std::string> rows(h, std::string(w, '.'));
-    for (int k = 0; k < w * h / 10; ++k) rows[rng.uniformInt(0, h - 1)][rng.uniformInt(0, w - 1)] = '@';
-    const GridMap map = test::mapFromRows(rows);
-    GeneratorOptions g;
-    g.robots = 3 + static_cast<int>(seed % 5);
-    g.seed = seed;
-    g.max_size = 1.0;
-    Instance in;
-    try {
-      in = generateInstance(map, g);
-    } catch (const InvalidInput&) {
-      continue;
-    }
+    const GridMap map = test::randomMap(seed, 14, 12, 6, 10);
+    const std::optional<Instance> fleet = test::randomFleet(map, 3 + static_cast<int>(seed % 5), seed);
+    if (!fleet) continue;
+    const Instance& in = *fleet;
     const FleetGraphs graphs(map, footprintsOf(in));
     for (const char* backend : {"la_cbs", "la_lacam"}) {
       LayeredOptions plain;
