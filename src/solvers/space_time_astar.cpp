@@ -56,9 +56,6 @@ class NodeTable {
   std::size_t size_ = 0;
 };
 
-// Expansions after which a search under area constraints works out where it can still finish.
-constexpr long long kAreaCheckAfter = 10'000;
-
 // Area constraints stay for good once they start, and from `static_from` nothing changes at
 // all. An area may cut the target off or force a long way round, which the plain distance
 // cannot tell: a search would fill space-time up to static_from before it gave up. Backward
@@ -193,7 +190,7 @@ LowLevelResult spaceTimeAStar(const SearchSpace& space, int a, const AgentConstr
     if (*seen.find(key(node.s, node.t, node.held)) != index) continue;  // superseded by a cheaper duplicate
     if (bounds && !bounds->alive(node.s, node.g)) continue;
     ++result.expansions;
-    if (!bounds && constraints.hasAreas() && result.expansions == kAreaCheckAfter) {
+    if (!bounds && constraints.hasAreas() && result.expansions > options.area_bounds_after) {
       // A time past every time constraint: only the areas speak there.
       const int late = AgentConstraints::kForever - 1;
       auto around_areas = [&](StateId p, Action act) {

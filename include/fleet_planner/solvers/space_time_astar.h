@@ -18,6 +18,9 @@ namespace fleet_planner {
 
 struct LowLevelOptions {
   long long max_nodes = 4'000'000;  ///< generated nodes before giving up (memory bound)
+  /// Expansions after which a search under area constraints computes where it can still finish
+  /// and prunes the rest (three backward searches over the agent's graph; see the .cpp).
+  long long area_bounds_after = 10'000;
   /// Tie-breaker among equal f: number of conflicts of doing `action` from `s` at step t with
   /// the other agents' current paths (fewer first). May be empty.
   std::function<int(StateId s, Action action, int t)> conflicts;
