@@ -22,26 +22,7 @@ using Request = fleet_planner::PlanFleet::Request;
 using Response = fleet_planner::PlanFleet::Response;
 using RobotResultMsg = fleet_planner::RobotResult;
 
-constexpr double kRes = 0.25, kOx = -1.0, kOy = 2.0;
 constexpr double kPi = 3.14159265358979323846;
-double cx(int i) { return kOx + (i + 0.5) * kRes; }
-double cy(int j) { return kOy + (j + 0.5) * kRes; }
-
-fleet_planner::FleetFootprints registry() {
-  fleet_planner::FleetFootprints fleet;
-  fleet.robots = {circleFootprint("amr_1", 0.3), circleFootprint("amr_2", 0.2),
-                  blockFootprint("tug", -0.4, 0.4, -0.2, 0.2)};
-  return fleet;
-}
-
-Request swapRequest() {
-  Request request;
-  request.tasks = {task("amr_1", cx(3), cy(3), 0, cx(19), cy(8), 0),
-                   task("amr_2", cx(19), cy(3), kPi, cx(3), cy(8), kPi),
-                   task("tug", cx(11), cy(6), 0, cx(11), cy(3), kPi / 2)};
-  request.time_limit = 10.0;
-  return request;
-}
 
 class PlanningServiceTest : public ::testing::Test {
  protected:

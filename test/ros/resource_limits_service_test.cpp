@@ -13,26 +13,6 @@ namespace {
 using Request = fleet_planner::PlanFleet::Request;
 using Response = fleet_planner::PlanFleet::Response;
 
-constexpr double kRes = 0.25, kOx = -1.0, kOy = 2.0;
-double cx(int i) { return kOx + (i + 0.5) * kRes; }
-double cy(int j) { return kOy + (j + 0.5) * kRes; }
-
-fleet_planner::FleetFootprints registry() {
-  fleet_planner::FleetFootprints fleet;
-  fleet.robots = {circleFootprint("amr_1", 0.3), circleFootprint("amr_2", 0.2),
-                  blockFootprint("tug", -0.4, 0.4, -0.2, 0.2)};
-  return fleet;
-}
-
-Request threeRobots() {
-  Request request;
-  request.tasks = {task("amr_1", cx(3), cy(3), 0, cx(19), cy(8), 0),
-                   task("amr_2", cx(19), cy(3), 3.14159265, cx(3), cy(8), 3.14159265),
-                   task("tug", cx(11), cy(6), 0, cx(11), cy(3), 1.57079633)};
-  request.time_limit = 10.0;
-  return request;
-}
-
 bool contains(const std::string& text, const std::string& part) {
   return text.find(part) != std::string::npos;
 }
@@ -43,12 +23,12 @@ TEST(PlanningServiceLimits, MoreRobotsThanMaxRobotsAnswerResourceLimit) {
   FleetPlanningService service(config);
   service.setMap(occupancyGrid(24, 12, kRes, kOx, kOy));
   service.setFootprints(registry());
-  const Response r = service.plan(threeRobots(), nullptr).response;
+  const Response r = service.plan(swapRequest(), nullptr).response;
   EXPECT_EQ(r.status, Response::RESOURCE_LIMIT);
   EXPECT_TRUE(contains(r.message, "3 robots")) << r.message;
   EXPECT_TRUE(contains(r.message, "max_robots=2")) << r.message;
   EXPECT_TRUE(r.timelines.empty());
-  Request two = threeRobots();
+  Request two = swapRequest();
   two.tasks.pop_back();
   EXPECT_EQ(service.plan(two, nullptr).response.status, Response::SUCCESS);
 }
@@ -60,7 +40,7 @@ TEST(PlanningServiceLimits, AMapOverMaxMapCellsIsRefusedBeforeConversion) {
   service.setFootprints(registry());
   EXPECT_THROW(service.setMap(occupancyGrid(24, 12, kRes, kOx, kOy)), ResourceLimitError);
   EXPECT_FALSE(service.hasMap());
-  const Response r = service.plan(threeRobots(), nullptr).response;
+  const Response r = service.plan(swapRequest(), nullptr).response;
   EXPECT_EQ(r.status, Response::RESOURCE_LIMIT);
   EXPECT_TRUE(contains(r.message, "24 x 12 = 288 cells")) << r.message;
   EXPECT_TRUE(contains(r.message, "max_map_cells=287")) << r.message;
@@ -73,7 +53,7 @@ TEST(PlanningServiceLimits, ARefusedMapKeepsThePreviousOne) {
   service.setFootprints(registry());
   service.setMap(occupancyGrid(24, 12, kRes, kOx, kOy));
   EXPECT_THROW(service.setMap(occupancyGrid(25, 12, kRes, kOx, kOy)), ResourceLimitError);
-  EXPECT_EQ(service.plan(threeRobots(), nullptr).response.status, Response::SUCCESS);
+  EXPECT_EQ(service.plan(swapRequest(), nullptr).response.status, Response::SUCCESS);
 }
 
 TEST(PlanningServiceLimits, GraphsOverMaxMemoryAnswerResourceLimit) {
@@ -84,7 +64,7 @@ TEST(PlanningServiceLimits, GraphsOverMaxMemoryAnswerResourceLimit) {
   FleetPlanningService service(config);
   service.setMap(occupancyGrid(24, 12, kRes, kOx, kOy));
   service.setFootprints(registry());
-  const Response r = service.plan(threeRobots(), nullptr).response;
+  const Response r = service.plan(swapRequest(), nullptr).response;
   EXPECT_EQ(r.status, Response::RESOURCE_LIMIT);
   EXPECT_TRUE(contains(r.message, "max_memory_mb=1")) << r.message;
   EXPECT_TRUE(contains(r.message, "state graphs of 3 robots")) << r.message;
@@ -97,14 +77,14 @@ TEST(PlanningServiceLimits, GraphsBuiltPastTheDeadlineAnswerTimeout) {
   FleetPlanningService service{PlannerConfig{}};
   service.setMap(occupancyGrid(24, 12, kRes, kOx, kOy));
   service.setFootprints(registry());
-  Request request = threeRobots();
+  Request request = swapRequest();
   request.time_limit = 1e-9;
   const Response r = service.plan(request, nullptr).response;
   EXPECT_EQ(r.status, Response::TIMEOUT) << r.message;
   EXPECT_TRUE(contains(r.message, "state graphs")) << r.message;
   for (const auto& robot : r.robots)
     EXPECT_EQ(robot.status, fleet_planner::RobotResult::NOT_PLANNED) << robot.message;
-  EXPECT_EQ(service.plan(threeRobots(), nullptr).response.status,
+  EXPECT_EQ(service.plan(swapRequest(), nullptr).response.status,
             Response::SUCCESS);  // nothing half-built is kept
 }
 

@@ -47,6 +47,23 @@ fleet_planner::RobotTask task(const std::string& id, double sx, double sy, doubl
   return t;
 }
 
+fleet_planner::FleetFootprints registry() {
+  fleet_planner::FleetFootprints fleet;
+  fleet.robots = {circleFootprint("amr_1", 0.3), circleFootprint("amr_2", 0.2),
+                  blockFootprint("tug", -0.4, 0.4, -0.2, 0.2)};
+  return fleet;
+}
+
+fleet_planner::PlanFleet::Request swapRequest() {
+  constexpr double kPi = 3.14159265358979323846;
+  fleet_planner::PlanFleet::Request request;
+  request.tasks = {task("amr_1", cx(3), cy(3), 0, cx(19), cy(8), 0),
+                   task("amr_2", cx(19), cy(3), kPi, cx(3), cy(8), kPi),
+                   task("tug", cx(11), cy(6), 0, cx(11), cy(3), kPi / 2)};
+  request.time_limit = 10.0;
+  return request;
+}
+
 Plan planOf(const fleet_planner::PlanFleet::Response& response) {
   Plan plan;
   for (const auto& timeline : response.timelines) {

@@ -25,6 +25,16 @@ fleet_planner::RobotFootprint blockFootprint(const std::string& id, double min_x
 fleet_planner::RobotTask task(const std::string& id, double sx, double sy, double syaw, double gx, double gy,
                               double gyaw);
 
+/// The hall most service tests plan in: 24 x 12 cells of kRes m with the origin at (kOx, kOy).
+constexpr double kRes = 0.25, kOx = -1.0, kOy = 2.0;
+/// Centre of the hall's cell column i / row j, metres.
+inline double cx(int i) { return kOx + (i + 0.5) * kRes; }
+inline double cy(int j) { return kOy + (j + 0.5) * kRes; }
+/// The hall's fleet: amr_1 and amr_2 (circles, 0.3 and 0.2 m) and tug (a 0.8 x 0.4 m block).
+fleet_planner::FleetFootprints registry();
+/// amr_1 and amr_2 swap sides of the hall while the tug turns from +x to +y; 10 s limit.
+fleet_planner::PlanFleet::Request swapRequest();
+
 /// The response's timelines as a core plan (grid states), in task order.
 Plan planOf(const fleet_planner::PlanFleet::Response& response);
 
