@@ -82,10 +82,11 @@ TEST_P(LayeredBackends, RandomInstancesGiveValidDeterministicPlans) {
 }
 
 // Independent subproblems (LA-LaCAM) or clusters (LA-CBS) run on a thread pool: one thread or
-// three give the same plan.
+// three give the same plan. Runs where a subproblem ran out of its time share and was merged
+// are left out: that depends on the machine's speed (it happens under ASan), not on threads.
 TEST_P(LayeredBackends, ThreadsDoNotChangeThePlan) {
   int compared = 0;
-  for (std::uint64_t seed = 1; seed <= 80 && compared < 15; ++seed) {
+  for (std::uint64_t seed = 1; seed <= 160 && compared < 15; ++seed) {
     const GridMap map = randomMap(seed + 1000);
     const std::optional<Instance> fleet = test::randomFleet(map, 4 + static_cast<int>(seed % 5), seed);
     if (!fleet) continue;
@@ -99,6 +100,7 @@ TEST_P(LayeredBackends, ThreadsDoNotChangeThePlan) {
     o.threads = 3;
     const LayeredResult three = planLayered(map, in, graphs, o, Deadline::in(1.0));
     if (!one.success() || !three.success() || one.refinement.deadline_hit || three.refinement.deadline_hit) continue;
+    if (!one.merges.empty() || !three.merges.empty()) continue;
     ++compared;
     EXPECT_EQ(one.plan.paths, three.plan.paths) << "seed " << seed;
     EXPECT_EQ(one.subproblems.size(), three.subproblems.size()) << "seed " << seed;
