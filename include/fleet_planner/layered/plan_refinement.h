@@ -33,7 +33,7 @@ struct RefinementOptions {
   int max_passes = 4;
   /// Low-level expansions of all searches together, per robot of the plan (checked between
   /// searches): bounds the refinement's work the same way on every machine.
-  long long expansions_per_robot = 20'000;
+  long long expansions_per_robot = 100'000;
   long long max_expansions = 1'000'000;  ///< and at most this many in all
   long long max_nodes_per_search = 100'000;  ///< generated nodes per low-level search
   int group_size = 4;                         ///< robots per group search; < 2: none
