@@ -21,8 +21,8 @@ struct Footprint {
   std::vector<Eigen::Vector2d> points;  ///< polygon, in order
   /// How deep (cells) a rotation may clip a cell beyond its two end poses before that cell
   /// counts as swept, in [0, kMaxSweepTolerance]. 0 (the default) is the exact sweep. The
-  /// benchmark pools were generated under a discretisation that ignores such clips (a block's
-  /// corner may pass about 0.1 cell into an obstacle cell while it turns), see
+  /// benchmark pools were generated under a discretisation that leaves some such clips out (a
+  /// block's corner may pass 0.1-0.35 cells into an obstacle cell while it turns), see
   /// docs/benchmarking.md; the poses themselves are always exact.
   double sweep_tolerance = 0.0;
   static constexpr double kMaxSweepTolerance = 0.25;
