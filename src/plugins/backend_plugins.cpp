@@ -4,6 +4,8 @@
 
 #include "fleet_planner/solvers/la_cbs.h"
 #include "fleet_planner/solvers/la_lacam.h"
+#include "fleet_planner/solvers/la_lns.h"
 
 PLUGINLIB_EXPORT_CLASS(fleet_planner::LaCbs, fleet_planner::Solver)
 PLUGINLIB_EXPORT_CLASS(fleet_planner::LaLacam, fleet_planner::Solver)
+PLUGINLIB_EXPORT_CLASS(fleet_planner::LaLns, fleet_planner::Solver)

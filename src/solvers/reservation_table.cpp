@@ -87,6 +87,18 @@ bool ReservationTable::taken(const CellSet& set, Cell origin, int t) const {
   return false;
 }
 
+void ReservationTable::takenIntervals(const CellSet& set, Cell origin, std::vector<std::pair<int, int>>& out) const {
+  if (intervals_.empty()) return;
+  for (const auto& run : set.runs()) {
+    const int y = origin.y + run.dy;
+    for (int x = origin.x + run.x0; x <= origin.x + run.x1; ++x) {
+      if (x < 0 || y < 0 || x >= width_ || y >= height_) continue;
+      const std::int32_t cell = y * width_ + x;
+      for (std::int32_t i = offsets_[cell]; i < offsets_[cell + 1]; ++i) out.emplace_back(intervals_[i].first, intervals_[i].last);
+    }
+  }
+}
+
 int ReservationTable::lastTaken(const CellSet& set, Cell origin) const {
   int last = -1;
   if (intervals_.empty()) return last;

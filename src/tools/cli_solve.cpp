@@ -30,7 +30,7 @@ void addSolveCommand(CLI::App& app) {
   auto o = std::make_shared<Options>();
   addProblemOptions(cmd, o->problem);
   addLimitOptions(cmd, o->problem.limits);
-  cmd->add_option("--backend", o->backend, "la_cbs | la_lacam (any registered backend)");
+  cmd->add_option("--backend", o->backend, "la_cbs | la_lacam | la_lns (any registered backend)");
   cmd->add_option("--mode", o->mode, "raw: the fleet as one subproblem; layered: decompose first")
       ->check(CLI::IsMember({"raw", "layered"}));
   cmd->add_option("--steps", o->steps, "layered: decomposition steps 1, 12, 123 or 1234")

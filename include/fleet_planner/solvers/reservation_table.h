@@ -28,6 +28,9 @@ class ReservationTable {
   bool taken(const CellSet& set, Cell origin, int t) const;
   /// Last step during which some cell of the set is taken (kForever if held forever, -1 if never).
   int lastTaken(const CellSet& set, Cell origin) const;
+  /// Every (first, last) step interval during which some cell of the set is taken, appended to
+  /// `out` unsorted and possibly overlapping (last is kForever for "from first on").
+  void takenIntervals(const CellSet& set, Cell origin, std::vector<std::pair<int, int>>& out) const;
   /// Last finite step of any reservation; after it the table never changes (-1 if empty).
   int lastChange() const { return last_change_; }
 

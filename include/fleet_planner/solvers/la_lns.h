@@ -1,0 +1,42 @@
+#pragma once
+/// LA-LNS: large neighbourhood search that repairs collisions, for large agents.
+///   Li, Chen, Harabor, Stuckey, Koenig. "MAPF-LNS2: Fast Repairing for Multi-Agent Path
+///   Finding via Large Neighborhood Search." AAAI 2022.
+///
+/// Every agent first gets a path by prioritized planning in which earlier agents' paths are soft
+/// obstacles (soft_path_search.h): the plan is complete but may collide. Then, until no two
+/// agents collide or the deadline passes, a few agents (a neighbourhood) lose their paths and are
+/// replanned one by one, in a seeded random order, around everybody else as soft obstacles; the
+/// new paths are kept when the number of colliding agent pairs does not grow. Neighbourhoods come
+/// from the collision graph (a colliding agent and its partners, widened by a random walk), from
+/// the agents in the way of a colliding agent's ideal path, or at random among colliding agents,
+/// chosen adaptively by how much each has helped (adaptive LNS).
+///
+/// Beyond the paper's backends. Serial: static footprints and the timed paths of other
+/// subproblems are hard obstacles. Incomplete: it never proves a subproblem infeasible (only
+/// the pre-check does); an unsolved subproblem is TIMEOUT. Same input and seed, same plan.
+#include "fleet_planner/solvers/solver.h"
+
+namespace fleet_planner {
+
+struct LaLnsOptions {
+  /// Agents replanned together in one repair step.
+  int neighborhood_size = 8;
+  /// Cost of one colliding step in the low level, in steps of path length.
+  int collision_cost = 16;
+  /// Expansions of one low-level search before it gives up.
+  long long max_expansions_per_search = 200'000;
+};
+
+class LaLns : public Solver {
+ public:
+  explicit LaLns(LaLnsOptions options = {}) : options_(options) {}
+  std::string name() const override { return "la_lns"; }
+  bool avoidsMovingObstacles() const override { return true; }
+  SolveResult solve(const Subproblem& problem) override;
+
+ private:
+  LaLnsOptions options_;
+};
+
+}  // namespace fleet_planner

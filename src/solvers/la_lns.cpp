@@ -1,0 +1,325 @@
+// LA-LNS; see la_lns.h for the reference.
+#include "fleet_planner/solvers/la_lns.h"
+
+#include <algorithm>
+#include <array>
+#include <numeric>
+
+#include "fleet_planner/core/random.h"
+#include "fleet_planner/solvers/registry.h"
+#include "fleet_planner/solvers/safe_interval_search.h"
+#include "fleet_planner/solvers/soft_path_search.h"
+#include "fleet_planner/solvers/solve_common.h"
+#include "fleet_planner/solvers/space_time_astar.h"
+
+namespace fleet_planner {
+
+namespace {
+
+const bool kRegistered = registerSolver("la_lns", [] { return std::make_unique<LaLns>(); });
+
+enum Method { kCollisionGraph = 0, kIdealPath = 1, kRandom = 2, kMethods = 3 };
+
+class LnsSearch {
+ public:
+  LnsSearch(const SearchSpace& space, const Subproblem& problem, const LaLnsOptions& options,
+            SolveStats& stats)
+      : space_(space),
+        problem_(problem),
+        options_(options),
+        stats_(stats),
+        n_(space.numAgents()),
+        table_(space),
+        rng_(problem.seed),
+        partners_(n_),
+        ideal_(n_),
+        escalation_(n_, 1) {
+    weights_.fill(1.0);
+  }
+
+  SolveResult run() {
+    std::vector<int> order(n_);
+    std::iota(order.begin(), order.end(), 0);
+    // Longest first: the agents with most to do get the freest space.
+    std::stable_sort(order.begin(), order.end(), [&](int x, int y) {
+      return space_.distance(x, space_.start(x)) > space_.distance(y, space_.start(y));
+    });
+    for (int a : order) {
+      StatePath path;
+      if (std::optional<SolveResult> stop = initialPath(a, path)) return *stop;
+      table_.insert(a, path);
+    }
+    for (int a = 0; a < n_; ++a) partners_[a] = table_.partners(a);
+    while (true) {
+      if (collidingPairs() == 0) {
+        // The table's answer, checked by the backends' own conflict code before it is returned.
+        std::vector<StatePath> paths(n_);
+        for (int a = 0; a < n_; ++a) paths[a] = table_.path(a);
+        const std::optional<AgentConflict> c = firstConflict(space_, paths);
+        if (!c) return success(paths);
+        link(c->a, c->b);
+      }
+      if (std::optional<SolveResult> stop = outOfBudget()) return *stop;
+      repair();
+    }
+  }
+
+ private:
+  std::optional<SolveResult> outOfBudget() const {
+    if (problem_.deadline.cancelled()) return failedResult(SolveStatus::Cancelled, "cancelled");
+    if (problem_.deadline.expired()) return timeout("time limit reached");
+    if (problem_.max_expansions >= 0 && stats_.low_level_expansions > problem_.max_expansions)
+      return timeout("expansion budget of " + std::to_string(problem_.max_expansions) + " used up");
+    return std::nullopt;
+  }
+
+  SolveResult timeout(const std::string& why) const {
+    return failedResult(SolveStatus::Timeout, why + " with " + std::to_string(collidingPairs()) +
+                                                  " colliding pairs of robots left");
+  }
+
+  // A path for a, around the agents planned so far as soft obstacles; if that search gives up,
+  // its shortest path in the static world and the other subproblems' timed paths.
+  std::optional<SolveResult> initialPath(int a, StatePath& path) {
+    SoftSearchResult r = search(a);
+    if (r.outcome == SoftSearchResult::Outcome::Found) {
+      path = std::move(r.path);
+      return std::nullopt;
+    }
+    if (const std::optional<SolveResult> stop = outOfBudget()) return stop;
+    const StatePath& ideal = idealPath(a);
+    if (ideal.empty()) {
+      if (const std::optional<SolveResult> stop = outOfBudget()) return stop;
+      return failedResult(
+          SolveStatus::Infeasible,
+          space_.label(a) + " cannot reach its target around the other subproblems' robots");
+    }
+    path = ideal;
+    return std::nullopt;
+  }
+
+  // An agent whose new path still collides gets a higher collision cost next time (doubling up
+  // to 64 times the base), so that a wait or a detour that a small cost would not pay for is
+  // found in the end; a collision-free path resets it.
+  SoftSearchResult search(int a) {
+    // A collision-free path first (safe intervals: long waits are cheap there), if there is one.
+    const SafeIntervalResult free = safeIntervalSearch(space_, a, table_, problem_.deadline,
+                                                       options_.max_expansions_per_search);
+    stats_.low_level_expansions += free.expansions;
+    if (free.outcome == SafeIntervalResult::Outcome::Found) {
+      escalation_[a] = 1;
+      SoftSearchResult r;
+      r.outcome = SoftSearchResult::Outcome::Found;
+      r.path = free.path;
+      return r;
+    }
+    if (free.outcome == SafeIntervalResult::Outcome::Expired) {
+      SoftSearchResult r;
+      r.outcome = SoftSearchResult::Outcome::Expired;
+      return r;
+    }
+    SoftSearchOptions o;
+    o.collision_cost = options_.collision_cost * escalation_[a];
+    o.max_expansions = options_.max_expansions_per_search;
+    SoftSearchResult r = softPathSearch(space_, a, table_, problem_.deadline, o);
+    stats_.low_level_expansions += r.expansions;
+    if (r.outcome == SoftSearchResult::Outcome::Found) {
+      escalation_[a] = r.collisions == 0 ? 1 : std::min(escalation_[a] * 2, 64);
+    } else if (r.outcome == SoftSearchResult::Outcome::NodeLimit) {
+      escalation_[a] = std::max(escalation_[a] / 2, 1);
+    }
+    return r;
+  }
+
+  // Shortest path of a around hard obstacles only (empty if none or out of time); cached.
+  const StatePath& idealPath(int a) {
+    if (ideal_[a].empty()) {
+      const LowLevelResult r = spaceTimeAStar(space_, a, AgentConstraints{}, problem_.deadline);
+      stats_.low_level_expansions += r.expansions;
+      if (r.outcome == LowLevelResult::Outcome::Found) ideal_[a] = r.path;
+    }
+    return ideal_[a];
+  }
+
+  int collidingPairs() const {
+    std::size_t ends = 0;
+    for (const auto& p : partners_) ends += p.size();
+    return static_cast<int>(ends / 2);
+  }
+
+  void link(int a, int b) {
+    auto add = [](std::vector<int>& v, int x) {
+      const auto it = std::lower_bound(v.begin(), v.end(), x);
+      if (it == v.end() || *it != x) v.insert(it, x);
+    };
+    add(partners_[a], b);
+    add(partners_[b], a);
+  }
+
+  int pick(const std::vector<int>& from) {
+    return from[rng_.uniformInt(0, static_cast<std::int64_t>(from.size()) - 1)];
+  }
+
+  void shuffle(std::vector<int>& v) {
+    for (std::size_t i = v.size(); i > 1; --i)
+      std::swap(v[i - 1], v[rng_.uniformInt(0, static_cast<std::int64_t>(i) - 1)]);
+  }
+
+  Method chooseMethod() {
+    double total = 0;
+    for (double w : weights_) total += w;
+    double r = rng_.uniform01() * total;
+    for (int m = 0; m < kMethods; ++m) {
+      if ((r -= weights_[m]) < 0) return static_cast<Method>(m);
+    }
+    return kRandom;
+  }
+
+  std::vector<int> neighborhood(Method method) {
+    const int k = std::min(options_.neighborhood_size, n_);
+    std::vector<int> colliding;
+    for (int a = 0; a < n_; ++a) {
+      if (!partners_[a].empty()) colliding.push_back(a);
+    }
+    if (k >= n_) {
+      std::vector<int> all(n_);
+      std::iota(all.begin(), all.end(), 0);
+      return all;
+    }
+    std::vector<int> chosen;
+    std::vector<bool> in(n_, false);
+    auto take = [&](int a) {
+      if (!in[a] && static_cast<int>(chosen.size()) < k) {
+        in[a] = true;
+        chosen.push_back(a);
+      }
+    };
+    const int seed_agent = pick(colliding);
+    take(seed_agent);
+    if (method == kCollisionGraph) {
+      // Breadth-first over the collision graph, then a random walk on it to widen a small one.
+      for (std::size_t head = 0; head < chosen.size(); ++head) {
+        std::vector<int> next = partners_[chosen[head]];
+        shuffle(next);
+        for (int b : next) take(b);
+      }
+      for (int step = 0, a = seed_agent; step < 4 * k && static_cast<int>(chosen.size()) < k;
+           ++step) {
+        const StatePath& ideal = idealPath(a);
+        if (ideal.empty()) break;
+        const std::vector<int> in_way = table_.partners(a, ideal);
+        if (in_way.empty()) break;
+        a = pick(in_way);
+        take(a);
+      }
+    } else if (method == kIdealPath) {
+      // The agents in the way of the seed agent's ideal path.
+      const StatePath& ideal = idealPath(seed_agent);
+      if (!ideal.empty()) {
+        std::vector<int> in_way = table_.partners(seed_agent, ideal);
+        shuffle(in_way);
+        for (int b : in_way) take(b);
+      }
+    }
+    // Fill up with random colliding agents (the random method takes only these).
+    shuffle(colliding);
+    for (int a : colliding) take(a);
+    return chosen;
+  }
+
+  // Colliding pairs with at least one agent of `group`, given each agent's partners.
+  static int pairsTouching(const std::vector<int>& group,
+                           const std::vector<std::vector<int>>& partners,
+                           const std::vector<bool>& in) {
+    int count = 0;
+    for (int a : group) {
+      for (int b : partners[a]) count += (!in[b] || a < b) ? 1 : 0;
+    }
+    return count;
+  }
+
+  void repair() {
+    ++stats_.high_level_nodes;
+    const Method method = chooseMethod();
+    std::vector<int> group = neighborhood(method);
+    std::vector<bool> in(n_, false);
+    for (int a : group) in[a] = true;
+    const int before = pairsTouching(group, partners_, in);
+
+    const std::vector<int> members = group;
+    std::vector<StatePath> old(group.size());
+    for (std::size_t i = 0; i < group.size(); ++i) {
+      old[i] = table_.path(group[i]);
+      table_.remove(group[i]);
+    }
+    shuffle(group);
+    bool planned = true;
+    for (int a : group) {
+      SoftSearchResult r = search(a);
+      if (r.outcome != SoftSearchResult::Outcome::Found) {
+        planned = false;
+        break;
+      }
+      table_.insert(a, r.path);
+    }
+    std::vector<std::vector<int>> fresh(n_);
+    int after = before + 1;
+    if (planned) {
+      for (int a : group) fresh[a] = table_.partners(a);
+      after = pairsTouching(group, fresh, in);
+    }
+    weights_[method] = 0.1 * std::max(0, before - after) / static_cast<double>(group.size()) +
+                       0.9 * weights_[method];
+    weights_[method] = std::max(weights_[method], 0.01);
+    if (after <= before) {
+      for (int a : group) {
+        for (int b : partners_[a]) {
+          if (!in[b])
+            partners_[b].erase(std::lower_bound(partners_[b].begin(), partners_[b].end(), a));
+        }
+      }
+      for (int a : group) partners_[a].clear();
+      for (int a : group) {
+        for (int b : fresh[a]) link(a, b);
+      }
+      return;
+    }
+    // Not better: put the old paths back.
+    for (std::size_t i = 0; i < members.size(); ++i) {
+      if (table_.contains(members[i])) table_.remove(members[i]);
+      table_.insert(members[i], old[i]);
+    }
+  }
+
+  SolveResult success(const std::vector<StatePath>& paths) const {
+    SolveResult r;
+    r.status = SolveStatus::Success;
+    r.paths = toPosePaths(space_, paths);
+    return r;
+  }
+
+  const SearchSpace& space_;
+  const Subproblem& problem_;
+  const LaLnsOptions& options_;
+  SolveStats& stats_;
+  const int n_;
+  SoftPathTable table_;
+  Rng rng_;
+  std::vector<std::vector<int>> partners_;  // sorted; symmetric: the collision graph
+  std::vector<StatePath> ideal_;
+  std::vector<int> escalation_;  // per agent: factor of the collision cost
+  std::array<double, kMethods> weights_;
+};
+
+}  // namespace
+
+SolveResult LaLns::solve(const Subproblem& problem) {
+  (void)kRegistered;
+  return solveWith(problem, /*moving_allowed=*/true,
+                   [&](const SearchSpace& space, SolveStats& stats) {
+                     LnsSearch search(space, problem, options_, stats);
+                     return search.run();
+                   });
+}
+
+}  // namespace fleet_planner

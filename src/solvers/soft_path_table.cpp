@@ -1,0 +1,175 @@
+#include "fleet_planner/solvers/soft_path_table.h"
+
+#include <algorithm>
+
+#include "fleet_planner/core/collision.h"
+#include "fleet_planner/solvers/space_time_astar.h"
+
+namespace fleet_planner {
+
+namespace {
+
+constexpr int kBucketCells = 4;  // a bucket is 4 x 4 cells: a large robot's sweep spans a few
+
+}  // namespace
+
+SoftPathTable::SoftPathTable(const SearchSpace& space)
+    : space_(space),
+      width_(space.numAgents() > 0 ? space.graph(0).width() : 1),
+      height_(space.numAgents() > 0 ? space.graph(0).height() : 1),
+      bx_((width_ + kBucketCells - 1) / kBucketCells),
+      by_((height_ + kBucketCells - 1) / kBucketCells),
+      buckets_(bx_ * by_),
+      paths_(space.numAgents()),
+      parked_(buckets_),
+      by_bucket_(buckets_),
+      stamp_(space.numAgents(), 0) {}
+
+SoftPathTable::Bucket SoftPathTable::bucketsOf(const CellSet& set, Cell origin) const {
+  auto clampX = [&](int x) { return std::clamp(x, 0, width_ - 1) / kBucketCells; };
+  auto clampY = [&](int y) { return std::clamp(y, 0, height_ - 1) / kBucketCells; };
+  return {clampX(origin.x + set.minX()), clampY(origin.y + set.minY()),
+          clampX(origin.x + set.maxX()), clampY(origin.y + set.maxY())};
+}
+
+template <class F>
+void SoftPathTable::forBuckets(const CellSet& set, Cell origin, F&& f) const {
+  if (set.empty()) return;
+  const Bucket b = bucketsOf(set, origin);
+  for (int y = b.y0; y <= b.y1; ++y) {
+    for (int x = b.x0; x <= b.x1; ++x) f(y * bx_ + x);
+  }
+}
+
+void SoftPathTable::index(int a, bool on) {
+  const StatePath& path = paths_[a];
+  const StateGraph& g = space_.graph(a);
+  auto edit = [&](std::vector<int>& agents) {
+    if (on) {
+      agents.push_back(a);
+    } else {
+      agents.erase(std::find(agents.begin(), agents.end(), a));
+    }
+  };
+  for (int t = 0; t + 1 < static_cast<int>(path.size()); ++t) {
+    const GridPose p = g.pose(path[t]);
+    const Action act = stepAction(g, path[t], path[t + 1]);
+    forBuckets(space_.cells(a).swept(p.heading, act), {p.x, p.y}, [&](int bucket) {
+      std::vector<int>& agents = moving_[key(t, bucket)];
+      edit(agents);
+      if (agents.empty()) moving_.erase(key(t, bucket));
+      std::vector<std::pair<int, int>>& entries = by_bucket_[bucket];
+      if (on) {
+        entries.emplace_back(t, a);
+      } else {
+        entries.erase(std::find(entries.begin(), entries.end(), std::make_pair(t, a)));
+      }
+    });
+  }
+  const GridPose end = g.pose(path.back());
+  forBuckets(space_.cells(a).body(end.heading), {end.x, end.y},
+             [&](int bucket) { edit(parked_[bucket]); });
+}
+
+void SoftPathTable::insert(int a, const StatePath& path) {
+  paths_[a] = path;
+  index(a, true);
+}
+
+void SoftPathTable::remove(int a) {
+  index(a, false);
+  paths_[a].clear();
+}
+
+int SoftPathTable::lastMove() const {
+  int last = -1;
+  for (const StatePath& p : paths_) last = std::max(last, static_cast<int>(p.size()) - 2);
+  return last;
+}
+
+bool SoftPathTable::hits(int a, const GridPose& p, Action action, int b, int t) const {
+  const StateGraph& g = space_.graph(b);
+  const StateId s = stateAt(paths_[b], t), n = stateAt(paths_[b], t + 1);
+  return sweepsOverlap(space_.cells(a), p, action, space_.cells(b), g.pose(s), stepAction(g, s, n));
+}
+
+void SoftPathTable::addOnce(int b, std::vector<int>& out) const {
+  if (stamp_[b] == query_) return;
+  stamp_[b] = query_;
+  out.push_back(b);
+}
+
+void SoftPathTable::collisions(int a, StateId s, Action action, int t,
+                               std::vector<int>& out) const {
+  ++query_;
+  stamp_[a] = query_;
+  const GridPose p = space_.graph(a).pose(s);
+  forBuckets(space_.cells(a).swept(p.heading, action), {p.x, p.y}, [&](int bucket) {
+    auto check = [&](int b) {
+      if (stamp_[b] != query_ && hits(a, p, action, b, t)) addOnce(b, out);
+    };
+    if (auto it = moving_.find(key(t, bucket)); it != moving_.end()) {
+      for (int b : it->second) check(b);
+    }
+    for (int b : parked_[bucket]) {
+      if (t + 1 >= static_cast<int>(paths_[b].size())) check(b);
+    }
+  });
+}
+
+void SoftPathTable::collisionsHolding(int a, StateId s, int t, std::vector<int>& out) const {
+  ++query_;
+  stamp_[a] = query_;
+  const GridPose p = space_.graph(a).pose(s);
+  const CellSet& body = space_.cells(a).body(p.heading);
+  const int last = lastMove();
+  forBuckets(body, {p.x, p.y}, [&](int bucket) {
+    for (int b : parked_[bucket]) {
+      if (stamp_[b] != query_ && hits(a, p, Action::Wait, b, static_cast<int>(paths_[b].size())))
+        addOnce(b, out);
+    }
+    for (int step = t; step <= last; ++step) {
+      const auto it = moving_.find(key(step, bucket));
+      if (it == moving_.end()) continue;
+      for (int b : it->second) {
+        if (stamp_[b] != query_ && hits(a, p, Action::Wait, b, step)) addOnce(b, out);
+      }
+    }
+  });
+}
+
+void SoftPathTable::unsafeSteps(int a, StateId s, Action action, std::vector<int>& steps,
+                                int& forever_from) const {
+  steps.clear();
+  forever_from = kNever;
+  const GridPose p = space_.graph(a).pose(s);
+  forBuckets(space_.cells(a).swept(p.heading, action), {p.x, p.y}, [&](int bucket) {
+    for (const auto& [t, b] : by_bucket_[bucket]) {
+      if (b != a && hits(a, p, action, b, t)) steps.push_back(t);
+    }
+    for (int b : parked_[bucket]) {
+      const int from = static_cast<int>(paths_[b].size()) - 1;
+      if (b != a && from < forever_from && hits(a, p, action, b, from)) forever_from = from;
+    }
+  });
+  std::sort(steps.begin(), steps.end());
+  steps.erase(std::unique(steps.begin(), steps.end()), steps.end());
+}
+
+std::vector<int> SoftPathTable::partners(int a, const StatePath& path) const {
+  std::vector<int> out, step;
+  if (path.empty()) return out;
+  const StateGraph& g = space_.graph(a);
+  const int until = std::max(static_cast<int>(path.size()) - 1, lastMove() + 1);
+  for (int t = 0; t <= until; ++t) {
+    const StateId s = stateAt(path, t), n = stateAt(path, t + 1);
+    step.clear();
+    collisions(a, s, stepAction(g, s, n), t, step);
+    out.insert(out.end(), step.begin(), step.end());
+  }
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+  return out;
+}
+
+}  // namespace fleet_planner

@@ -1,0 +1,125 @@
+// LA-LNS and its two low levels: the soft path table against the backends' conflict code, the
+// safe interval search's long waits, and moving obstacles. Every plan goes through the
+// independent validator.
+#include <gtest/gtest.h>
+
+#include "fleet_planner/core/plan_validator.h"
+#include "fleet_planner/core/random.h"
+#include "fleet_planner/solvers/registry.h"
+#include "fleet_planner/solvers/safe_interval_search.h"
+#include "fleet_planner/solvers/soft_path_table.h"
+#include "fleet_planner/solvers/space_time_astar.h"
+#include "solver_test_util.h"
+#include "test_maps.h"
+
+namespace fleet_planner::test {
+namespace {
+
+// A random walk of `steps` steps of agent a from its start (waits included).
+StatePath randomWalk(const SearchSpace& space, int a, int steps, Rng& rng) {
+  StatePath path{space.start(a)};
+  for (int t = 0; t < steps; ++t) {
+    std::vector<StateId> next{path.back()};
+    space.graph(a).forEachSuccessor(path.back(), [&](Action act, StateId s) {
+      if (space.allows(a, path.back(), act)) next.push_back(s);
+    });
+    path.push_back(next[rng.uniformInt(0, static_cast<std::int64_t>(next.size()) - 1)]);
+  }
+  return path;
+}
+
+// The table's collision graph is the one the backends' own conflict code finds, on random walks
+// of robots of every footprint kind, of different lengths (ended paths stay put).
+TEST(SoftPathTable, PartnersAgreeWithConflictingPairs) {
+  std::vector<Robot> robots{dot("d", {1, 1, 0}, {1, 1, 0}), bar("b", {5, 5, 0}, {5, 5, 0}),
+                            triangle("p", {9, 2, 1}, {9, 2, 1}),
+                            makeRobot("c", Footprint::circle(0.9), {3, 8, 2}, {3, 8, 2}),
+                            bar("e", {8, 9, 1}, {8, 9, 1})};
+  const World w(freeMap(12, 12), robots);
+  const Subproblem sub = allRobots(w);
+  const SearchSpace space(sub);
+  Rng rng(5);
+  int pairs_seen = 0;
+  for (int round = 0; round < 200; ++round) {
+    std::vector<StatePath> paths;
+    SoftPathTable table(space);
+    for (int a = 0; a < space.numAgents(); ++a) {
+      paths.push_back(randomWalk(space, a, static_cast<int>(rng.uniformInt(0, 12)), rng));
+      table.insert(a, paths.back());
+    }
+    // Remove and re-insert one agent: the index must forget its old entries.
+    table.remove(2);
+    table.insert(2, paths[2]);
+    std::vector<std::pair<int, int>> from_table;
+    for (int a = 0; a < space.numAgents(); ++a) {
+      for (int b : table.partners(a)) {
+        if (a < b) from_table.emplace_back(a, b);
+      }
+    }
+    ASSERT_EQ(from_table, conflictingPairs(space, paths)) << "round " << round;
+    pairs_seen += static_cast<int>(from_table.size());
+  }
+  EXPECT_GT(pairs_seen, 50) << "the walks should collide often enough to test something";
+}
+
+// A 1-wide corridor with one side pocket at x = 6: the runner drives the whole corridor on its
+// shortest path while the other robot stands in its way at x = 7. The waiter must drive into
+// the pocket before the runner reaches it, wait there until the runner has passed, and only
+// then drive to its target behind it; the wait is one node of the safe interval search.
+TEST(SafeIntervalSearch, WaitsInPocketUntilRunnerPassed) {
+  const World w(mapFromRows({"..............", "@@@@@@.@@@@@@@"}),
+                {dot("runner", {0, 0, 0}, {13, 0, 0}), dot("waiter", {7, 0, 1}, {10, 0, 0})});
+  const Subproblem sub = allRobots(w);
+  const SearchSpace space(sub);
+  SoftPathTable table(space);
+  const LowLevelResult runner = spaceTimeAStar(space, 0, AgentConstraints{}, Deadline::in(5.0));
+  ASSERT_EQ(runner.outcome, LowLevelResult::Outcome::Found);
+  table.insert(0, runner.path);
+  const SafeIntervalResult r = safeIntervalSearch(space, 1, table, Deadline::in(5.0), 100000);
+  ASSERT_EQ(r.outcome, SafeIntervalResult::Outcome::Found);
+  std::vector<StatePath> paths{runner.path, r.path};
+  EXPECT_EQ(conflictingPairs(space, paths).size(), 0u);
+  Plan plan;
+  for (int a = 0; a < 2; ++a) {
+    Path p;
+    for (StateId s : paths[a]) p.push_back(space.graph(a).pose(s));
+    plan.paths.push_back(p);
+  }
+  const ValidationResult v = validatePlan(w.map, w.instance, plan);
+  EXPECT_TRUE(v.valid()) << v.violation.message;
+  bool in_pocket = false;
+  for (StateId s : r.path) in_pocket = in_pocket || space.graph(1).pose(s).y == 1;
+  EXPECT_TRUE(in_pocket) << "the waiter can only let the runner by from the pocket";
+}
+
+TEST(SafeIntervalSearch, NoCollisionFreePathIsNoPath) {
+  // The runner parks for good on the only way to the waiter's target.
+  const World w(freeMap(7, 1),
+                {dot("runner", {0, 0, 0}, {3, 0, 0}), dot("waiter", {6, 0, 1}, {0, 0, 1})});
+  const Subproblem sub = allRobots(w);
+  const SearchSpace space(sub);
+  SoftPathTable table(space);
+  table.insert(0, {space.start(0), space.graph(0).next(space.start(0), Action::Forward)});
+  const SafeIntervalResult r = safeIntervalSearch(space, 1, table, Deadline::in(5.0), 100000);
+  EXPECT_EQ(r.outcome, SafeIntervalResult::Outcome::NoPath);
+}
+
+TEST(LaLns, AvoidsMovingObstacleThatParksOnItsRoute) {
+  const Path mover_path{{2, 0, 2}, {2, 1, 2}};
+  const World w(freeMap(5, 3), {dot("runner", {0, 1, 0}, {4, 1, 0}),
+                                dot("mover", mover_path.front(), mover_path.back())});
+  const std::unique_ptr<Solver> solver = makeSolver("la_lns");
+  EXPECT_TRUE(solver->avoidsMovingObstacles());
+  Subproblem sub = allRobots(w);
+  sub.robots = {0};
+  sub.moving = {{1, mover_path}};
+  const Outcome o = solveWith(*solver, w, sub);
+  ASSERT_TRUE(solvedValidly(o));
+  Plan joint;
+  joint.paths = {o.result.paths[0], mover_path};
+  const ValidationResult v = validatePlan(w.map, w.instance, joint);
+  EXPECT_TRUE(v.valid()) << v.violation.message;
+}
+
+}  // namespace
+}  // namespace fleet_planner::test
