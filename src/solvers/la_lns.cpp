@@ -6,6 +6,7 @@
 #include <numeric>
 
 #include "fleet_planner/core/random.h"
+#include "fleet_planner/solvers/joint_repair.h"
 #include "fleet_planner/solvers/registry.h"
 #include "fleet_planner/solvers/safe_interval_search.h"
 #include "fleet_planner/solvers/soft_path_search.h"
@@ -18,7 +19,7 @@ namespace {
 
 const bool kRegistered = registerSolver("la_lns", [] { return std::make_unique<LaLns>(); });
 
-enum Method { kCollisionGraph = 0, kIdealPath = 1, kRandom = 2, kMethods = 3 };
+enum Method { kCollisionGraph = 0, kIdealPath = 1, kRandom = 2, kJoint = 3, kMethods = 4 };
 
 class LnsSearch {
  public:
@@ -238,10 +239,46 @@ class LnsSearch {
     return count;
   }
 
+  // Replans the group robot by robot (each around all others); false if a search gave up.
+  bool planOneByOne(const std::vector<int>& group) {
+    for (int a : group) {
+      SoftSearchResult r = search(a);
+      if (r.outcome != SoftSearchResult::Outcome::Found) return false;
+      table_.insert(a, r.path);
+    }
+    return true;
+  }
+
+  // Replans the group jointly by LA-CBS around all others' paths, within a small share of the
+  // time left; false if it found no plan.
+  bool planTogether(const std::vector<int>& group) {
+    const double seconds = std::min(options_.joint_seconds, problem_.deadline.remaining() / 4);
+    const std::vector<StatePath> paths =
+        jointRepair(space_, problem_, table_, group, seconds, options_.joint_max_expansions,
+                    rng_.next(), stats_.low_level_expansions);
+    for (std::size_t k = 0; k < paths.size(); ++k) table_.insert(group[k], paths[k]);
+    return !paths.empty();
+  }
+
+  // A colliding agent and up to joint_size - 1 of its partners.
+  std::vector<int> knot() {
+    std::vector<int> colliding;
+    for (int a = 0; a < n_; ++a) {
+      if (!partners_[a].empty()) colliding.push_back(a);
+    }
+    const int a = pick(colliding);
+    std::vector<int> others = partners_[a];
+    shuffle(others);
+    others.resize(
+        std::min<std::size_t>(others.size(), static_cast<std::size_t>(options_.joint_size - 1)));
+    others.insert(others.begin(), a);
+    return others;
+  }
+
   void repair() {
     ++stats_.high_level_nodes;
     const Method method = chooseMethod();
-    std::vector<int> group = neighborhood(method);
+    std::vector<int> group = method == kJoint ? knot() : neighborhood(method);
     std::vector<bool> in(n_, false);
     for (int a : group) in[a] = true;
     const int before = pairsTouching(group, partners_, in);
@@ -253,15 +290,7 @@ class LnsSearch {
       table_.remove(group[i]);
     }
     shuffle(group);
-    bool planned = true;
-    for (int a : group) {
-      SoftSearchResult r = search(a);
-      if (r.outcome != SoftSearchResult::Outcome::Found) {
-        planned = false;
-        break;
-      }
-      table_.insert(a, r.path);
-    }
+    const bool planned = method == kJoint ? planTogether(group) : planOneByOne(group);
     std::vector<std::vector<int>> fresh(n_);
     int after = before + 1;
     if (planned) {

@@ -90,9 +90,6 @@ TEST_P(Conformance, HeadOnBlocksTurnToChangeLane) {
 }
 
 TEST_P(Conformance, CorridorSwapUsesSidePocket) {
-  if (GetParam() == "la_lns")
-    GTEST_SKIP() << "known weakness: LA-LNS replans robots one at a time, and here each robot's best "
-                    "answer to the other's straight path is a one-step head-on pass (open)";
   const World w(mapFromRows({".......", "@@@.@@@"}),
                 {dot("a", {0, 0, 0}, {6, 0, 0}), dot("b", {6, 0, 1}, {0, 0, 1})});
   ASSERT_TRUE(wellFormed(w));

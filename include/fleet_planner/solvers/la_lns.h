@@ -10,7 +10,9 @@
 /// new paths are kept when the number of colliding agent pairs does not grow. Neighbourhoods come
 /// from the collision graph (a colliding agent and its partners, widened by a random walk), from
 /// the agents in the way of a colliding agent's ideal path, or at random among colliding agents,
-/// chosen adaptively by how much each has helped (adaptive LNS).
+/// chosen adaptively by how much each has helped (adaptive LNS). A fourth kind of step replans a
+/// colliding agent and up to two of its partners together by LA-CBS around everybody else
+/// (joint_repair.h), for the knots that one-by-one replanning cannot untie.
 ///
 /// Beyond the paper's backends. Serial: static footprints and the timed paths of other
 /// subproblems are hard obstacles. Incomplete: it never proves a subproblem infeasible (only
@@ -26,6 +28,11 @@ struct LaLnsOptions {
   int collision_cost = 16;
   /// Expansions of one low-level search before it gives up.
   long long max_expansions_per_search = 200'000;
+  /// Joint repair (joint_repair.h): agents replanned together by LA-CBS, its time (at most a
+  /// quarter of what is left) and its expansions.
+  int joint_size = 3;
+  double joint_seconds = 0.5;
+  long long joint_max_expansions = 100'000;
 };
 
 class LaLns : public Solver {
