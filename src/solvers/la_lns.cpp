@@ -34,6 +34,7 @@ class LnsSearch {
         rng_(problem.seed),
         partners_(n_),
         ideal_(n_),
+        ideal_absent_(n_, false),
         escalation_(n_, 1) {
     weights_.fill(1.0);
   }
@@ -91,6 +92,7 @@ class LnsSearch {
     const StatePath& ideal = idealPath(a);
     if (ideal.empty()) {
       if (const std::optional<SolveResult> stop = outOfBudget()) return stop;
+      if (!ideal_absent_[a]) return timeout(space_.label(a) + "'s first path search ran out of nodes");
       return failedResult(
           SolveStatus::Infeasible,
           space_.label(a) + " cannot reach its target around the other subproblems' robots");
@@ -134,10 +136,11 @@ class LnsSearch {
 
   // Shortest path of a around hard obstacles only (empty if none or out of time); cached.
   const StatePath& idealPath(int a) {
-    if (ideal_[a].empty()) {
+    if (ideal_[a].empty() && !ideal_absent_[a]) {
       const LowLevelResult r = spaceTimeAStar(space_, a, AgentConstraints{}, problem_.deadline);
       stats_.low_level_expansions += r.expansions;
       if (r.outcome == LowLevelResult::Outcome::Found) ideal_[a] = r.path;
+      ideal_absent_[a] = r.outcome == LowLevelResult::Outcome::NoPath;
     }
     return ideal_[a];
   }
@@ -336,6 +339,7 @@ class LnsSearch {
   Rng rng_;
   std::vector<std::vector<int>> partners_;  // sorted; symmetric: the collision graph
   std::vector<StatePath> ideal_;
+  std::vector<bool> ideal_absent_;  // the search proved there is no such path
   std::vector<int> escalation_;  // per agent: factor of the collision cost
   std::array<double, kMethods> weights_;
 };
