@@ -250,9 +250,13 @@ def solve_one(args, run, folder):
     if os.path.exists(plan):
         os.remove(plan)
     problem = problem_args(args.benchmark_dir, name, k, subset, seed, folder, args.cli) + model_args(args)
+    # "BACKEND+FALLBACK" (e.g. la_lacam+la_lns): the backend with a fallback backend (CLI --fallback).
+    primary, _, fallback = backend.partition("+")
     argv = [args.cli, "solve"] + problem + [
-        "--backend", backend, "--mode", method, "--time-limit", str(args.time_limit),
+        "--backend", primary, "--mode", method, "--time-limit", str(args.time_limit),
         "--seed", str(seed), "--threads", str(args.threads), "--out", plan]
+    if fallback:
+        argv += ["--fallback", fallback]
     if method == "layered":
         argv += ["--steps", steps]
     timeout = args.time_limit + args.grace
@@ -482,7 +486,8 @@ def parse_args(argv):
                    help="robot counts, each used up to the map's pool size (default: the profile's)")
     p.add_argument("--methods", nargs="+", choices=["raw", "layered"], default=["raw", "layered"])
     p.add_argument("--backends", nargs="+", default=["la_cbs", "la_lacam"], metavar="BACKEND",
-                   help="la_cbs, la_lacam (default: both)")
+                   help="la_cbs, la_lacam, la_lns, or BACKEND+FALLBACK such as la_lacam+la_lns (the CLI's --fallback; "
+                        "default: la_cbs la_lacam)")
     p.add_argument("--steps", nargs="+", choices=STEP_SETS, default=["1234"],
                    help="decomposition steps of the layered runs (default: 1234)")
     p.add_argument("--time-limit", type=float, help="seconds per solve, graphs included (default: the profile's)")

@@ -35,6 +35,9 @@ struct LayeredOptions {
   /// Serial backends: plan clusters independently (in parallel) and merge them by delays, instead
   /// of planning every level around all earlier paths (one chain, the paper's serial scheme).
   bool independent_clusters = true;
+  /// Backend tried on a subproblem that `backend` fails, before the safeguard merges it
+  /// (subproblem_solving.h); "" for none. It must plan around moving obstacles if `backend` does.
+  std::string fallback;
   bool refine = true;     ///< replan robots one at a time around the others (plan_refinement.h)
   bool compress = true;   ///< drop every wait that no conflict needs (plan_compression.h)
   std::uint64_t seed = 0;

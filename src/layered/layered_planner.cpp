@@ -22,7 +22,11 @@ double since(std::chrono::steady_clock::time_point t) {
 LayeredResult planLayered(const GridMap& map, const Instance& instance, const FleetGraphs& graphs,
                           const LayeredOptions& options, const Deadline& deadline) {
   LayeredResult result;
-  makeSolver(options.backend);  // throws InvalidInput for an unknown backend, before any work
+  // Unknown backends throw InvalidInput before any work.
+  const bool serial = makeSolver(options.backend)->avoidsMovingObstacles();
+  if (!options.fallback.empty() && serial && !makeSolver(options.fallback)->avoidsMovingObstacles())
+    throw InvalidInput("fallback backend '" + options.fallback + "' cannot plan around moving obstacles, which backend '" +
+                       options.backend + "' hands on");
   const int n = static_cast<int>(instance.robots.size());
 
   // 1. Decomposition. It needs every robot to reach its target alone: an instance that fails the
@@ -69,6 +73,7 @@ LayeredResult planLayered(const GridMap& map, const Instance& instance, const Fl
   }
   SubproblemSolvingOptions solving_options;
   solving_options.backend = options.backend;
+  solving_options.fallback = options.fallback;
   solving_options.threads = options.threads;
   solving_options.seed = options.seed;
   SubproblemSolving solved = solveSubproblems(instance, graphs, std::move(order), solving_options, deadline);

@@ -133,7 +133,10 @@ class Solving {
     const double share = k + 1 == order_.size()
                              ? 1.0
                              : std::max(0.25, static_cast<double>(sub.robots.size()) / std::max(1, pending_robots_));
-    sub.deadline = deadline_.within(deadline_.remaining() * share);
+    const Deadline share_deadline = deadline_.within(deadline_.remaining() * share);
+    const bool has_fallback = !options_.fallback.empty() && options_.fallback != options_.backend;
+    sub.deadline = has_fallback ? share_deadline.within(share_deadline.remaining() * (1.0 - options_.fallback_share))
+                                : share_deadline;
     // Around many timed paths, a low-level search can take long to find the gaps between them.
     // Past a budget, the level is planned as a parallel backend would (the earlier levels of its
     // cluster at their targets) and delayed until it fits among them, which always works.
@@ -142,8 +145,22 @@ class Solving {
     SolveResult solved = makeSolver(options_.backend)->solve(sub);
     const bool fallback = around_paths && !solved.success() && !sub.deadline.expired();
     if (fallback) solved = solveThenDelay(sub, solved.stats);
+    bool by_fallback = false;
+    if (has_fallback && !solved.success() && solved.status != SolveStatus::Infeasible && !share_deadline.expired()) {
+      Subproblem again = sub;
+      again.deadline = share_deadline;
+      again.max_expansions = -1;
+      SolveResult second = makeSolver(options_.fallback)->solve(again);
+      second.stats.time_s += solved.stats.time_s;
+      second.stats.low_level_expansions += solved.stats.low_level_expansions;
+      second.stats.high_level_nodes += solved.stats.high_level_nodes;
+      if (!second.success()) second.reason = options_.backend + ": " + solved.reason + "; " + options_.fallback + ": " + second.reason;
+      by_fallback = second.success();
+      solved = std::move(second);
+    }
     SolvedSubproblem& s = order_[k];
-    s.delayed_in_cluster = fallback;
+    s.delayed_in_cluster = fallback && !by_fallback;
+    s.by_fallback = by_fallback;
     s.status = solved.status;
     s.reason = solved.reason;
     s.time_s = solved.stats.time_s;

@@ -11,6 +11,16 @@
 
 namespace fleet_planner::cli {
 
+namespace {
+
+int solvedByFallback(const LayeredResult& result) {
+  int count = 0;
+  for (const auto& s : result.subproblems) count += s.by_fallback ? 1 : 0;
+  return count;
+}
+
+}  // namespace
+
 void addSolveCommand(CLI::App& app) {
   auto* cmd = app.add_subcommand("solve", "plan an instance; print one JSON line");
   struct Options {
@@ -26,6 +36,7 @@ void addSolveCommand(CLI::App& app) {
     bool no_compress = false;
     bool no_refine = false;
     bool one_chain = false;
+    std::string fallback;
   };
   auto o = std::make_shared<Options>();
   addProblemOptions(cmd, o->problem);
@@ -44,6 +55,9 @@ void addSolveCommand(CLI::App& app) {
   cmd->add_flag("--no-refine", o->no_refine, "keep the merged paths (no replanning of single robots)");
   cmd->add_flag("--one-chain", o->one_chain,
                 "serial backends: plan every level around all earlier paths (no independent clusters)");
+  cmd->add_option("--fallback", o->fallback,
+                  "layered: backend tried on a subproblem that --backend fails, in the second half of its time "
+                  "share, before the safeguard merges it (e.g. la_lns; default none)");
   cmd->add_flag("--details", o->details, "add the solved subproblems (robot ids, status, time, delay) to the JSON");
   cmd->callback([o] {
     const auto t0 = std::chrono::steady_clock::now();
@@ -76,6 +90,7 @@ void addSolveCommand(CLI::App& app) {
     options.compress = !o->no_compress;
     options.refine = !o->no_refine;
     options.independent_clusters = !o->one_chain;
+    options.fallback = o->fallback;
     if (graphs) result = planLayered(p.map, p.instance, *graphs, options, deadline);
 
     const int n = static_cast<int>(p.instance.robots.size());
@@ -84,6 +99,7 @@ void addSolveCommand(CLI::App& app) {
     nlohmann::json j{{"status", statusName(result.status)},
                      {"success", result.success()},
                      {"backend", o->backend},
+                     {"fallback", o->fallback},
                      {"mode", o->mode},
                      {"steps", options.decompose ? o->steps : ""},
                      {"agents", n},
@@ -97,6 +113,7 @@ void addSolveCommand(CLI::App& app) {
                      {"solved_subproblems", result.subproblems.size()},
                      {"max_solved_subproblem", largest},
                      {"merges", result.merges},
+                     {"solved_by_fallback", solvedByFallback(result)},
                      {"refine_s", result.refinement.time_s},
                      {"refine_searches", result.refinement.searches},
                      {"refine_improved", result.refinement.improved},
@@ -112,7 +129,7 @@ void addSolveCommand(CLI::App& app) {
         for (int r : s.robots) ids.push_back(p.instance.robots[r].id);
         list.push_back({{"robots", ids}, {"cluster", s.cluster}, {"level", s.level}, {"status", statusName(s.status)},
                         {"time_s", s.time_s}, {"delay", s.delay}, {"high_level_nodes", s.stats.high_level_nodes},
-                        {"low_level_expansions", s.stats.low_level_expansions}});
+                        {"low_level_expansions", s.stats.low_level_expansions}, {"by_fallback", s.by_fallback}});
       }
       j["subproblem_details"] = list;
     }

@@ -20,7 +20,8 @@
 /// Units run on a pool of `threads`. Then the subproblems are merged in order. The first one
 /// that failed, while time remains, is merged with its neighbour (the next one, or for the last
 /// the one before; their clusters become one) and the units it touched are solved again;
-/// every merge is reported. Each subproblem's seed is the planner's seed plus its first
+/// every merge is reported. With a fallback backend, a subproblem that the backend fails within
+/// the first part of its time share is tried with the fallback in the rest before that. Each subproblem's seed is the planner's seed plus its first
 /// position in the decomposition, so results do not depend on the threads.
 #include <string>
 #include <vector>
@@ -47,6 +48,9 @@ struct SolvedSubproblem {
   /// Serial backends: planning around its cluster's earlier paths ran past its budget, so it
   /// was planned with their targets blocked and delayed until it fit among them.
   bool delayed_in_cluster = false;
+  /// The backend failed (not INFEASIBLE) within the first part of its time share, and the
+  /// fallback backend solved it in the rest.
+  bool by_fallback = false;
 };
 
 struct SubproblemSolving {
@@ -59,6 +63,12 @@ struct SubproblemSolving {
 
 struct SubproblemSolvingOptions {
   std::string backend = "la_cbs";
+  /// Backend tried on a subproblem that `backend` fails without proving it infeasible, before
+  /// the safeguard merges it ("" or equal to `backend`: none). It must plan around moving
+  /// obstacles if `backend` does.
+  std::string fallback;
+  /// Part of a subproblem's time share left to the fallback (when there is one).
+  double fallback_share = 0.5;
   int threads = 1;
   std::uint64_t seed = 0;
 };
