@@ -19,16 +19,20 @@ constexpr long long kChainExpansionsPerRobot = 50'000;
 
 std::string idsOf(const Instance& instance, const std::vector<int>& robots) {
   std::string out;
-  for (std::size_t k = 0; k < robots.size() && k < 6; ++k) out += (k ? "," : "") + instance.robots[robots[k]].id;
+  for (std::size_t k = 0; k < robots.size() && k < 6; ++k)
+    out += (k ? "," : "") + instance.robots[robots[k]].id;
   if (robots.size() > 6) out += ",... (" + std::to_string(robots.size()) + " robots)";
   return out;
 }
 
 class Solving {
  public:
-  Solving(const Instance& instance, const FleetGraphs& graphs, const SubproblemSolvingOptions& options,
-          const Deadline& deadline)
-      : instance_(instance), graphs_(graphs), options_(options), deadline_(deadline),
+  Solving(const Instance& instance, const FleetGraphs& graphs,
+          const SubproblemSolvingOptions& options, const Deadline& deadline)
+      : instance_(instance),
+        graphs_(graphs),
+        options_(options),
+        deadline_(deadline),
         serial_(makeSolver(options.backend)->avoidsMovingObstacles()) {}
 
   SubproblemSolving run(std::vector<SolvedSubproblem> order) {
@@ -46,8 +50,8 @@ class Solving {
                      : deadline_.cancelled() ? SolveStatus::Cancelled
                      : deadline_.expired()   ? SolveStatus::Timeout
                                              : failed.status;
-        out.reason = "subproblem " + std::to_string(k) + " (" + idsOf(instance_, order_[k].robots) + "): " +
-                     (results_[k] ? failed.reason : std::string("not solved"));
+        out.reason = "subproblem " + std::to_string(k) + " (" + idsOf(instance_, order_[k].robots) +
+                     "): " + (results_[k] ? failed.reason : std::string("not solved"));
         out.order = order_;
         out.merges = merges_;
         return out;
@@ -73,7 +77,8 @@ class Solving {
                          failed_clusters.end()) {
         continue;
       }
-      const bool chained = serial_ && !units.empty() && order_[units.back().back()].cluster == order_[k].cluster &&
+      const bool chained = serial_ && !units.empty() &&
+                           order_[units.back().back()].cluster == order_[k].cluster &&
                            units.back().back() + 1 == k;
       if (chained) {
         units.back().push_back(k);
@@ -100,7 +105,8 @@ class Solving {
         }
       }
     };
-    const int threads = std::max(1, std::min<int>(options_.threads, static_cast<int>(units.size())));
+    const int threads =
+        std::max(1, std::min<int>(options_.threads, static_cast<int>(units.size())));
     std::vector<std::thread> pool;
     for (int t = 1; t < threads; ++t) pool.emplace_back(work);
     work();
@@ -130,23 +136,28 @@ class Solving {
     // A time share: at least a quarter of what is left, more for a larger part of the robots
     // being solved; the last subproblem gets all of it. A share that runs out triggers the
     // safeguard.
-    const double share = k + 1 == order_.size()
-                             ? 1.0
-                             : std::max(0.25, static_cast<double>(sub.robots.size()) / std::max(1, pending_robots_));
+    const double share =
+        k + 1 == order_.size()
+            ? 1.0
+            : std::max(0.25, static_cast<double>(sub.robots.size()) / std::max(1, pending_robots_));
     const Deadline share_deadline = deadline_.within(deadline_.remaining() * share);
     const bool has_fallback = !options_.fallback.empty() && options_.fallback != options_.backend;
-    sub.deadline = has_fallback ? share_deadline.within(share_deadline.remaining() * (1.0 - options_.fallback_share))
-                                : share_deadline;
+    sub.deadline =
+        has_fallback
+            ? share_deadline.within(share_deadline.remaining() * (1.0 - options_.fallback_share))
+            : share_deadline;
     // Around many timed paths, a low-level search can take long to find the gaps between them.
     // Past a budget, the level is planned as a parallel backend would (the earlier levels of its
     // cluster at their targets) and delayed until it fits among them, which always works.
     const bool around_paths = !sub.moving.empty();
-    if (around_paths) sub.max_expansions = kChainExpansionsPerRobot * static_cast<long long>(sub.robots.size());
+    if (around_paths)
+      sub.max_expansions = kChainExpansionsPerRobot * static_cast<long long>(sub.robots.size());
     SolveResult solved = makeSolver(options_.backend)->solve(sub);
     const bool fallback = around_paths && !solved.success() && !sub.deadline.expired();
     if (fallback) solved = solveThenDelay(sub, solved.stats);
     bool by_fallback = false;
-    if (has_fallback && !solved.success() && solved.status != SolveStatus::Infeasible && !share_deadline.expired()) {
+    if (has_fallback && !solved.success() && solved.status != SolveStatus::Infeasible &&
+        !share_deadline.expired()) {
       Subproblem again = sub;
       again.deadline = share_deadline;
       again.max_expansions = -1;
@@ -154,7 +165,9 @@ class Solving {
       second.stats.time_s += solved.stats.time_s;
       second.stats.low_level_expansions += solved.stats.low_level_expansions;
       second.stats.high_level_nodes += solved.stats.high_level_nodes;
-      if (!second.success()) second.reason = options_.backend + ": " + solved.reason + "; " + options_.fallback + ": " + second.reason;
+      if (!second.success())
+        second.reason = options_.backend + ": " + solved.reason + "; " + options_.fallback + ": " +
+                        second.reason;
       by_fallback = second.success();
       solved = std::move(second);
     }
@@ -195,12 +208,13 @@ class Solving {
   void mergeWithNeighbour(std::size_t k, const SolveResult& failed) {
     const std::size_t other = k + 1 < order_.size() ? k + 1 : k - 1;
     const std::size_t first = std::min(k, other);
-    merges_.push_back("subproblem " + std::to_string(k) + " (" + idsOf(instance_, order_[k].robots) + ") failed: " +
-                      (results_[k] ? failed.reason : std::string("not solved")) + " (after " +
-                      std::to_string(failed.stats.time_s).substr(0, 5) + " s, " +
+    merges_.push_back("subproblem " + std::to_string(k) + " (" +
+                      idsOf(instance_, order_[k].robots) +
+                      ") failed: " + (results_[k] ? failed.reason : std::string("not solved")) +
+                      " (after " + std::to_string(failed.stats.time_s).substr(0, 5) + " s, " +
                       std::to_string(failed.stats.high_level_nodes) + " high-level nodes, " +
-                      std::to_string(failed.stats.low_level_expansions) + " expansions); merged with subproblem " +
-                      std::to_string(other));
+                      std::to_string(failed.stats.low_level_expansions) +
+                      " expansions); merged with subproblem " + std::to_string(other));
     const int keep = order_[first].cluster, gone = order_[first + 1].cluster;
     for (auto& s : order_) {
       if (s.cluster == gone) s.cluster = keep;
@@ -213,7 +227,8 @@ class Solving {
     results_.erase(results_.begin() + static_cast<std::ptrdiff_t>(first) + 1);
     results_[first].reset();
     if (serial_) {
-      for (std::size_t m = first + 1; m < order_.size() && order_[m].cluster == keep; ++m) results_[m].reset();
+      for (std::size_t m = first + 1; m < order_.size() && order_[m].cluster == keep; ++m)
+        results_[m].reset();
     }
   }
 
@@ -258,7 +273,8 @@ class Solving {
 }  // namespace
 
 SubproblemSolving solveSubproblems(const Instance& instance, const FleetGraphs& graphs,
-                                   std::vector<SolvedSubproblem> order, const SubproblemSolvingOptions& options,
+                                   std::vector<SolvedSubproblem> order,
+                                   const SubproblemSolvingOptions& options,
                                    const Deadline& deadline) {
   return Solving(instance, graphs, options, deadline).run(std::move(order));
 }

@@ -19,8 +19,8 @@ namespace {
 using test::dot;
 using test::footprintsOf;
 
-LayeredResult plan(const GridMap& map, const Instance& in, const std::string& backend, bool layered = true,
-                   double seconds = 5.0) {
+LayeredResult plan(const GridMap& map, const Instance& in, const std::string& backend,
+                   bool layered = true, double seconds = 5.0) {
   const FleetGraphs graphs(map, footprintsOf(in));
   LayeredOptions o;
   o.backend = backend;
@@ -37,6 +37,48 @@ std::vector<std::vector<int>> solvedPartition(const LayeredResult& r) {
   return parts;
 }
 
+// Six robots of every footprint kind crossing an open 12 x 12 map (the conformance suite's mixed
+// fleet): raw LA-CBS does not solve it within seconds, LA-LNS does in a fraction of one. With
+// LA-LNS as the fallback the raw subproblem is solved in the second half of its time, validly,
+// and reported as solved by the fallback.
+TEST(LayeredFallback, FallbackSolvesWhatTheBackendCannot) {
+  const GridMap map =
+      test::mapFromRows({"......@.....", "............", "............", "............",
+                         "............", "@....@......", "......@....@", "............",
+                         "............", "............", "............", ".....@......"});
+  Instance in;
+  in.robots = {
+      dot("c1", {0, 1, 0}, {11, 10, 1}),
+      test::makeRobot("c2", Footprint::circle(0.9), {2, 9, 3}, {9, 2, 2}),
+      test::makeRobot("b1", Footprint::block(-0.5, -0.5, 1.5, 0.5), {8, 9, 1}, {3, 2, 0}),
+      test::makeRobot("p1", Footprint::polygon({{1, 0}, {-1, 1}, {-1, -1}}), {9, 5, 1}, {2, 6, 0}),
+      dot("c3", {11, 1, 1}, {0, 10, 0}),
+      test::makeRobot("b2", Footprint::block(-0.5, -0.5, 0.5, 1.5), {5, 9, 0}, {7, 3, 1})};
+  const FleetGraphs graphs(map, footprintsOf(in));
+  LayeredOptions o;
+  o.backend = "la_cbs";
+  o.decompose = false;
+  const LayeredResult alone = planLayered(map, in, graphs, o, Deadline::in(3.0));
+  EXPECT_FALSE(alone.success()) << "precondition: raw LA-CBS is expected to time out here";
+  o.fallback = "la_lns";
+  const LayeredResult helped = planLayered(map, in, graphs, o, Deadline::in(6.0));
+  ASSERT_TRUE(helped.success()) << helped.reason;
+  EXPECT_TRUE(validatePlan(map, in, helped.plan).valid());
+  ASSERT_EQ(helped.subproblems.size(), 1u);
+  EXPECT_TRUE(helped.subproblems[0].by_fallback);
+}
+
+TEST(LayeredFallback, ParallelFallbackOfASerialBackendIsRefused) {
+  const GridMap map = test::mapFromRows({"....."});
+  Instance in;
+  in.robots = {dot("a", {0, 0, 0}, {4, 0, 0})};
+  const FleetGraphs graphs(map, footprintsOf(in));
+  LayeredOptions o;
+  o.backend = "la_cbs";
+  o.fallback = "la_lacam";
+  EXPECT_THROW(planLayered(map, in, graphs, o, Deadline::in(1.0)), InvalidInput);
+}
+
 class LayeredBackends : public ::testing::TestWithParam<std::string> {};
 
 // 500 seeded random instances per backend (1000 plans in all): every returned plan is valid,
@@ -51,7 +93,8 @@ TEST_P(LayeredBackends, RandomInstancesGiveValidDeterministicPlans) {
   int solved = 0, tried = 0, compared = 0, repartitioned = 0;
   for (std::uint64_t seed = 1; seed <= 500; ++seed) {
     const GridMap map = randomMap(seed);
-    const std::optional<Instance> fleet = test::randomFleet(map, 2 + static_cast<int>(seed % 6), seed);
+    const std::optional<Instance> fleet =
+        test::randomFleet(map, 2 + static_cast<int>(seed % 6), seed);
     if (!fleet) continue;
     const Instance& in = *fleet;
     ++tried;
@@ -77,8 +120,9 @@ TEST_P(LayeredBackends, RandomInstancesGiveValidDeterministicPlans) {
   EXPECT_GE(tried, 450);
   EXPECT_GE(compared, 20);
   EXPECT_GE(solved, tried / 2) << GetParam() << " solved " << solved << " of " << tried;
-  std::cout << "[ random    ] " << GetParam() << ": " << solved << " of " << tried << " solved within 0.25 s, "
-            << compared << " rerun identical, " << repartitioned << " rerun with other subproblems\n";
+  std::cout << "[ random    ] " << GetParam() << ": " << solved << " of " << tried
+            << " solved within 0.25 s, " << compared << " rerun identical, " << repartitioned
+            << " rerun with other subproblems\n";
 }
 
 // Independent subproblems (LA-LaCAM) or clusters (LA-CBS) run on a thread pool: one thread or
@@ -88,7 +132,8 @@ TEST_P(LayeredBackends, ThreadsDoNotChangeThePlan) {
   int compared = 0;
   for (std::uint64_t seed = 1; seed <= 160 && compared < 15; ++seed) {
     const GridMap map = randomMap(seed + 1000);
-    const std::optional<Instance> fleet = test::randomFleet(map, 4 + static_cast<int>(seed % 5), seed);
+    const std::optional<Instance> fleet =
+        test::randomFleet(map, 4 + static_cast<int>(seed % 5), seed);
     if (!fleet) continue;
     const Instance& in = *fleet;
     const FleetGraphs graphs(map, footprintsOf(in));
@@ -99,7 +144,9 @@ TEST_P(LayeredBackends, ThreadsDoNotChangeThePlan) {
     const LayeredResult one = planLayered(map, in, graphs, o, Deadline::in(1.0));
     o.threads = 3;
     const LayeredResult three = planLayered(map, in, graphs, o, Deadline::in(1.0));
-    if (!one.success() || !three.success() || one.refinement.deadline_hit || three.refinement.deadline_hit) continue;
+    if (!one.success() || !three.success() || one.refinement.deadline_hit ||
+        three.refinement.deadline_hit)
+      continue;
     if (!one.merges.empty() || !three.merges.empty()) continue;
     ++compared;
     EXPECT_EQ(one.plan.paths, three.plan.paths) << "seed " << seed;
@@ -138,13 +185,15 @@ class Stubborn : public Solver {
     return makeSolver("la_lacam")->solve(p);
   }
 };
-const bool kStubborn = registerSolver("stubborn_test_backend", [] { return std::make_unique<Stubborn>(); });
+const bool kStubborn =
+    registerSolver("stubborn_test_backend", [] { return std::make_unique<Stubborn>(); });
 
 TEST(LayeredPlanner, FailedSubproblemIsMergedWithItsNeighbour) {
   ASSERT_TRUE(kStubborn);
   const GridMap map = test::freeMap(12, 6);
   Instance in;
-  in.robots = {dot("a", {0, 0, 0}, {11, 0, 0}), dot("stubborn", {0, 3, 0}, {11, 3, 0}), dot("c", {0, 5, 0}, {11, 5, 0})};
+  in.robots = {dot("a", {0, 0, 0}, {11, 0, 0}), dot("stubborn", {0, 3, 0}, {11, 3, 0}),
+               dot("c", {0, 5, 0}, {11, 5, 0})};
   const LayeredResult r = plan(map, in, "stubborn_test_backend");
   ASSERT_TRUE(r.success()) << r.reason;
   ASSERT_EQ(r.merges.size(), 1u);
