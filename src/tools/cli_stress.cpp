@@ -37,7 +37,7 @@ struct StressOptions {
   double min_time_limit = -1;  // -1: the same as time_limit
   int jobs = 1;
   int threads = 1;
-  std::vector<std::string> backends{"la_cbs", "la_lacam"};
+  std::vector<std::string> backends{"la_cbs", "la_lacam", "la_lns"};
   std::vector<std::string> modes{"raw", "1", "12", "123", "1234"};
   int recheck_every = 10;
   double max_overrun_ms = 100;
