@@ -37,11 +37,8 @@ class Sipp {
     const std::uint64_t k = static_cast<std::uint64_t>(s) * kActions + static_cast<int>(action);
     auto it = unsafe_.find(k);
     if (it != unsafe_.end()) return it->second;
-    std::vector<int> steps;
     int forever = kNever;
-    others_.unsafeSteps(a_, s, action, steps, forever);
-    runs_.clear();
-    for (int t : steps) runs_.emplace_back(t, t);
+    others_.unsafeRuns(a_, s, action, runs_, forever);
     if (forever != kNever) runs_.emplace_back(forever, kNever);
     const ReservationTable& reservations = space_.reservations();
     if (!reservations.empty()) {

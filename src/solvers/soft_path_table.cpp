@@ -51,20 +51,32 @@ void SoftPathTable::index(int a, bool on) {
       agents.erase(std::find(agents.begin(), agents.end(), a));
     }
   };
+  std::vector<int> touched;  // buckets whose runs name a (removal)
   for (int t = 0; t + 1 < static_cast<int>(path.size()); ++t) {
     const GridPose p = g.pose(path[t]);
     const Action act = stepAction(g, path[t], path[t + 1]);
+    // A wait after a wait at the same state is the same motion: it extends the bucket's run.
+    const bool same = act == Action::Wait && t > 0 && path[t - 1] == path[t];
     forBuckets(space_.cells(a).swept(p.heading, act), {p.x, p.y}, [&](int bucket) {
       std::vector<int>& agents = moving_[key(t, bucket)];
       edit(agents);
       if (agents.empty()) moving_.erase(key(t, bucket));
-      std::vector<std::pair<int, int>>& entries = by_bucket_[bucket];
-      if (on) {
-        entries.emplace_back(t, a);
+      std::vector<Run>& runs = by_bucket_[bucket];
+      if (!on) {
+        touched.push_back(bucket);
+      } else if (same && !runs.empty() && runs.back().agent == a && runs.back().last == t - 1) {
+        runs.back().last = t;
       } else {
-        entries.erase(std::find(entries.begin(), entries.end(), std::make_pair(t, a)));
+        runs.push_back({t, t, a});
       }
     });
+  }
+  std::sort(touched.begin(), touched.end());
+  touched.erase(std::unique(touched.begin(), touched.end()), touched.end());
+  for (int bucket : touched) {
+    std::vector<Run>& runs = by_bucket_[bucket];
+    runs.erase(std::remove_if(runs.begin(), runs.end(), [a](const Run& r) { return r.agent == a; }),
+               runs.end());
   }
   const GridPose end = g.pose(path.back());
   forBuckets(space_.cells(a).body(end.heading), {end.x, end.y},
@@ -138,22 +150,21 @@ void SoftPathTable::collisionsHolding(int a, StateId s, int t, std::vector<int>&
   });
 }
 
-void SoftPathTable::unsafeSteps(int a, StateId s, Action action, std::vector<int>& steps,
-                                int& forever_from) const {
-  steps.clear();
+void SoftPathTable::unsafeRuns(int a, StateId s, Action action,
+                               std::vector<std::pair<int, int>>& runs, int& forever_from) const {
+  runs.clear();
   forever_from = kNever;
   const GridPose p = space_.graph(a).pose(s);
   forBuckets(space_.cells(a).swept(p.heading, action), {p.x, p.y}, [&](int bucket) {
-    for (const auto& [t, b] : by_bucket_[bucket]) {
-      if (b != a && hits(a, p, action, b, t)) steps.push_back(t);
+    for (const Run& r : by_bucket_[bucket]) {
+      // Every step of a run is the same motion: one check answers for all of them.
+      if (r.agent != a && hits(a, p, action, r.agent, r.first)) runs.emplace_back(r.first, r.last);
     }
     for (int b : parked_[bucket]) {
       const int from = static_cast<int>(paths_[b].size()) - 1;
       if (b != a && from < forever_from && hits(a, p, action, b, from)) forever_from = from;
     }
   });
-  std::sort(steps.begin(), steps.end());
-  steps.erase(std::unique(steps.begin(), steps.end()), steps.end());
 }
 
 std::vector<int> SoftPathTable::partners(int a, const StatePath& path) const {

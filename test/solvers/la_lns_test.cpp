@@ -62,6 +62,51 @@ TEST(SoftPathTable, PartnersAgreeWithConflictingPairs) {
   EXPECT_GT(pairs_seen, 50) << "the walks should collide often enough to test something";
 }
 
+// The per-bucket runs that the safe interval search reads say the same as a step-by-step query:
+// for random placements and actions of one robot among random walks of the others (waits
+// included, so runs of several steps occur), a step is unsafe exactly when some run or the
+// "for good" bound covers it.
+TEST(SoftPathTable, UnsafeRunsAgreeWithStepQueries) {
+  std::vector<Robot> robots{dot("d", {1, 1, 0}, {1, 1, 0}), bar("b", {5, 5, 0}, {5, 5, 0}),
+                            triangle("p", {9, 2, 1}, {9, 2, 1}),
+                            makeRobot("c", Footprint::circle(0.9), {3, 8, 2}, {3, 8, 2}),
+                            bar("e", {8, 9, 1}, {8, 9, 1})};
+  const World w(freeMap(12, 12), robots);
+  const Subproblem sub = allRobots(w);
+  const SearchSpace space(sub);
+  Rng rng(9);
+  int unsafe_seen = 0;
+  for (int round = 0; round < 100; ++round) {
+    SoftPathTable table(space);
+    for (int a = 1; a < space.numAgents(); ++a) {
+      StatePath walk = randomWalk(space, a, static_cast<int>(rng.uniformInt(0, 12)), rng);
+      // Long waits: repeat some states.
+      StatePath path;
+      for (StateId s : walk)
+        path.insert(path.end(), static_cast<std::size_t>(rng.uniformInt(1, 3)), s);
+      table.insert(a, path);
+    }
+    const StatePath mine = randomWalk(space, 0, 20, rng);
+    for (StateId s : mine) {
+      for (Action act : {Action::Wait, Action::Forward, Action::RotateCcw, Action::RotateCw}) {
+        if (space.graph(0).next(s, act) == kNoState && act != Action::Wait) continue;
+        std::vector<std::pair<int, int>> runs;
+        int forever = 0;
+        table.unsafeRuns(0, s, act, runs, forever);
+        for (int t = 0; t <= table.lastMove() + 3; ++t) {
+          std::vector<int> met;
+          table.collisions(0, s, act, t, met);
+          bool covered = t >= forever;
+          for (const auto& [first, last] : runs) covered = covered || (first <= t && t <= last);
+          ASSERT_EQ(covered, !met.empty()) << "round " << round << ", step " << t;
+          unsafe_seen += covered ? 1 : 0;
+        }
+      }
+    }
+  }
+  EXPECT_GT(unsafe_seen, 100) << "the robots should meet often enough to test something";
+}
+
 // A 1-wide corridor with one side pocket at x = 6: the runner drives the whole corridor on its
 // shortest path while the other robot stands in its way at x = 7. The waiter must drive into
 // the pocket before the runner reaches it, wait there until the runner has passed, and only

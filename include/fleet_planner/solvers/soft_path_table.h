@@ -39,11 +39,12 @@ class SoftPathTable {
   std::vector<int> partners(int a) const { return partners(a, paths_[a]); }
   std::vector<int> partners(int a, const StatePath& path) const;
   /// The steps during which agent a doing `action` from s would collide with an agent in the
-  /// table (other than a), sorted, each once, up to and including lastMove(); and the first step
-  /// from which it collides for good with an agent standing at its end (kNever if none).
+  /// table (other than a), as (first, last) runs, unsorted and possibly overlapping, up to
+  /// lastMove(); and the first step from which it collides for good with an agent standing at
+  /// its end (kNever if none).
   static constexpr int kNever = 1 << 30;
-  void unsafeSteps(int a, StateId s, Action action, std::vector<int>& steps,
-                   int& forever_from) const;
+  void unsafeRuns(int a, StateId s, Action action, std::vector<std::pair<int, int>>& runs,
+                  int& forever_from) const;
   /// Last step during which some agent in the table moves (every path of length 1: -1).
   int lastMove() const;
 
@@ -68,8 +69,12 @@ class SoftPathTable {
   std::vector<StatePath> paths_;
   std::unordered_map<std::uint64_t, std::vector<int>> moving_;  // (step, bucket) -> agents moving
   std::vector<std::vector<int>> parked_;                        // bucket -> agents at their end
-  std::vector<std::vector<std::pair<int, int>>> by_bucket_;     // bucket -> (step, agent) moving
-  mutable std::vector<std::uint32_t> stamp_;                    // dedup of query results
+  struct Run {
+    int first, last;  // steps of one motion repeated (a wait), or a single step
+    int agent;
+  };
+  std::vector<std::vector<Run>> by_bucket_;   // bucket -> the motions that touch it
+  mutable std::vector<std::uint32_t> stamp_;  // dedup of query results
   mutable std::uint32_t query_ = 0;
 };
 
