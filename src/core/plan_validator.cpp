@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <memory>
 #include <sstream>
+#include <utility>
+#include <vector>
 
 #include "fleet_planner/core/collision.h"
 #include "fleet_planner/core/footprint_cells.h"
@@ -19,6 +21,41 @@ bool cellsFree(const GridMap& map, const CellSet& set, const GridPose& origin) {
     }
   }
   return true;
+}
+
+// The bounding box of `set` placed at `origin`, inclusive (x0 > x1 for an empty set).
+struct Box {
+  int x0, y0, x1, y1;
+};
+
+Box boxOf(const CellSet& set, const GridPose& origin) {
+  if (set.empty()) return {1, 1, 0, 0};
+  return {origin.x + set.minX(), origin.y + set.minY(), origin.x + set.maxX(),
+          origin.y + set.maxY()};
+}
+
+// The pairs (i < j) whose boxes share a cell, sorted: the only pairs whose sets can overlap
+// (sweep and prune along x). A broad phase only: every candidate is still checked cell by cell.
+std::vector<std::pair<int, int>> overlappingBoxes(const std::vector<Box>& boxes) {
+  std::vector<int> order(boxes.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = static_cast<int>(i);
+  std::sort(order.begin(), order.end(), [&](int a, int b) { return boxes[a].x0 < boxes[b].x0; });
+  std::vector<std::pair<int, int>> pairs;
+  std::vector<int> active;
+  for (int k : order) {
+    const Box& b = boxes[k];
+    if (b.x0 > b.x1) continue;
+    active.erase(
+        std::remove_if(active.begin(), active.end(), [&](int m) { return boxes[m].x1 < b.x0; }),
+        active.end());
+    for (int m : active) {
+      if (boxes[m].y0 <= b.y1 && b.y0 <= boxes[m].y1)
+        pairs.emplace_back(std::min(k, m), std::max(k, m));
+    }
+    active.push_back(k);
+  }
+  std::sort(pairs.begin(), pairs.end());
+  return pairs;
 }
 
 class Checker {
@@ -45,19 +82,22 @@ class Checker {
                     "path ends at " + toString(p.back()) + ", target is " + toString(r.target));
       for (const GridPose& s : p) {
         if (!validHeading(s.heading))
-          return fail(Violation::Kind::IllegalAction, i, -1, -1, "heading of " + toString(s) + " is not 0..3");
+          return fail(Violation::Kind::IllegalAction, i, -1, -1,
+                      "heading of " + toString(s) + " is not 0..3");
       }
     }
     cells_.reserve(n);
-    for (const Robot& r : instance_.robots) cells_.push_back(std::make_unique<FootprintCells>(r.footprint));
+    for (const Robot& r : instance_.robots)
+      cells_.push_back(std::make_unique<FootprintCells>(r.footprint));
 
     int horizon = 0;
     for (const Path& p : plan_.paths) horizon = std::max(horizon, static_cast<int>(p.size()) - 1);
 
     for (int i = 0; i < n; ++i) {
       if (!cellsFree(map_, cells_[i]->body(plan_.paths[i][0].heading), plan_.paths[i][0]))
-        return fail(Violation::Kind::StateInObstacle, i, -1, 0,
-                    "footprint at " + toString(plan_.paths[i][0]) + " covers a blocked or off-map cell");
+        return fail(
+            Violation::Kind::StateInObstacle, i, -1, 0,
+            "footprint at " + toString(plan_.paths[i][0]) + " covers a blocked or off-map cell");
     }
     if (Violation v = vertexConflicts(0); v.kind != Violation::Kind::None) return v;
 
@@ -80,15 +120,18 @@ class Checker {
                           " sweeps a blocked or off-map cell");
       }
       if (Violation v = vertexConflicts(t + 1); v.kind != Violation::Kind::None) return v;
+      std::vector<Box> boxes(n);
       for (int i = 0; i < n; ++i) {
         const GridPose& a = stateAt(plan_.paths[i], t);
-        for (int j = i + 1; j < n; ++j) {
-          const GridPose& b = stateAt(plan_.paths[j], t);
-          if (sweepsOverlap(*cells_[i], a, actions[i], *cells_[j], b, actions[j]))
-            return fail(Violation::Kind::TransferConflict, i, j, t,
-                        std::string(actionName(actions[i])) + " from " + toString(a) + " and " +
-                            actionName(actions[j]) + " from " + toString(b) + " sweep a common cell");
-        }
+        boxes[i] = boxOf(cells_[i]->swept(a.heading, actions[i]), a);
+      }
+      for (const auto& [i, j] : overlappingBoxes(boxes)) {
+        const GridPose& a = stateAt(plan_.paths[i], t);
+        const GridPose& b = stateAt(plan_.paths[j], t);
+        if (sweepsOverlap(*cells_[i], a, actions[i], *cells_[j], b, actions[j]))
+          return fail(Violation::Kind::TransferConflict, i, j, t,
+                      std::string(actionName(actions[i])) + " from " + toString(a) + " and " +
+                          actionName(actions[j]) + " from " + toString(b) + " sweep a common cell");
       }
     }
     return {};
@@ -97,19 +140,23 @@ class Checker {
  private:
   Violation vertexConflicts(int t) {
     const int n = static_cast<int>(cells_.size());
+    std::vector<Box> boxes(n);
     for (int i = 0; i < n; ++i) {
       const GridPose& a = stateAt(plan_.paths[i], t);
-      for (int j = i + 1; j < n; ++j) {
-        const GridPose& b = stateAt(plan_.paths[j], t);
-        if (footprintsOverlap(*cells_[i], a, *cells_[j], b))
-          return fail(Violation::Kind::VertexConflict, i, j, t,
-                      "footprints at " + toString(a) + " and " + toString(b) + " overlap");
-      }
+      boxes[i] = boxOf(cells_[i]->body(a.heading), a);
+    }
+    for (const auto& [i, j] : overlappingBoxes(boxes)) {
+      const GridPose& a = stateAt(plan_.paths[i], t);
+      const GridPose& b = stateAt(plan_.paths[j], t);
+      if (footprintsOverlap(*cells_[i], a, *cells_[j], b))
+        return fail(Violation::Kind::VertexConflict, i, j, t,
+                    "footprints at " + toString(a) + " and " + toString(b) + " overlap");
     }
     return {};
   }
 
-  Violation fail(Violation::Kind kind, int robot, int other, int time, const std::string& what) const {
+  Violation fail(Violation::Kind kind, int robot, int other, int time,
+                 const std::string& what) const {
     Violation v;
     v.kind = kind;
     v.robot = robot;
