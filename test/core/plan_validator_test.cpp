@@ -4,6 +4,11 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
+#include "fleet_planner/core/collision.h"
+#include "fleet_planner/core/fleet_graphs.h"
+#include "fleet_planner/core/random.h"
 #include "test_maps.h"
 #include "test_robots.h"
 
@@ -19,8 +24,8 @@ Robot robot(const std::string& id, Footprint f, GridPose start, GridPose target)
 }
 using test::dot;
 
-Violation check(const GridMap& map, const std::vector<Robot>& robots, const std::vector<Path>& paths,
-                ActionModel model = {}) {
+Violation check(const GridMap& map, const std::vector<Robot>& robots,
+                const std::vector<Path>& paths, ActionModel model = {}) {
   Instance instance;
   instance.robots = robots;
   Plan plan;
@@ -89,16 +94,18 @@ TEST(PlanValidator, StateInObstacle) {
 TEST(PlanValidator, SweepInObstacle) {
   // Both end poses of the turn are free; the front corner passes over (3, 2).
   const GridMap map = mapFromRows({".....", ".....", "...@.", ".....", "....."});
-  const auto v = check(map, {robot("b", Footprint::block(-0.5, -0.5, 1.5, 0.5), {1, 2, 0}, {1, 2, 2})},
-                       {{{1, 2, 0}, {1, 2, 2}}});
+  const auto v =
+      check(map, {robot("b", Footprint::block(-0.5, -0.5, 1.5, 0.5), {1, 2, 0}, {1, 2, 2})},
+            {{{1, 2, 0}, {1, 2, 2}}});
   EXPECT_EQ(v.kind, Kind::SweepInObstacle);
   EXPECT_EQ(v.time, 0);
 }
 
 TEST(PlanValidator, VertexConflict) {
   const GridMap map = freeMap(5, 1);
-  const auto v = check(map, {dot("a", {0, 0, 0}, {2, 0, 0}), dot("b", {4, 0, 1}, {3, 0, 1})},
-                       {{{0, 0, 0}, {1, 0, 0}, {2, 0, 0}}, {{4, 0, 1}, {3, 0, 1}, {2, 0, 1}, {3, 0, 1}}});
+  const auto v =
+      check(map, {dot("a", {0, 0, 0}, {2, 0, 0}), dot("b", {4, 0, 1}, {3, 0, 1})},
+            {{{0, 0, 0}, {1, 0, 0}, {2, 0, 0}}, {{4, 0, 1}, {3, 0, 1}, {2, 0, 1}, {3, 0, 1}}});
   EXPECT_EQ(v.kind, Kind::VertexConflict);
   EXPECT_EQ(v.time, 2);
   EXPECT_EQ(v.robot, 0);
@@ -116,8 +123,9 @@ TEST(PlanValidator, SwapIsATransferConflict) {
 TEST(PlanValidator, TurningIntoAWaitingRobotIsATransferConflict) {
   // The block's turn sweeps (3, 2), where a waits; no footprints overlap before or after.
   const GridMap map = freeMap(5, 5);
-  const auto v = check(map, {robot("b", Footprint::block(-0.5, -0.5, 1.5, 0.5), {1, 2, 0}, {1, 2, 2}),
-                             dot("a", {3, 2, 0}, {3, 2, 0})},
+  const auto v = check(map,
+                       {robot("b", Footprint::block(-0.5, -0.5, 1.5, 0.5), {1, 2, 0}, {1, 2, 2}),
+                        dot("a", {3, 2, 0}, {3, 2, 0})},
                        {{{1, 2, 0}, {1, 2, 2}}, {{3, 2, 0}}});
   EXPECT_EQ(v.kind, Kind::TransferConflict);
   EXPECT_EQ(v.robot, 0);
@@ -127,9 +135,10 @@ TEST(PlanValidator, TurningIntoAWaitingRobotIsATransferConflict) {
 TEST(PlanValidator, ArrivedRobotsStayAtTheirTargets) {
   // a arrives at (2, 0) at t = 2 and stays; b drives through (2, 0) at t = 4.
   const GridMap map = freeMap(5, 2);
-  const auto v = check(map, {dot("a", {1, 1, 3}, {2, 0, 0}), dot("b", {0, 0, 0}, {4, 0, 0})},
-                       {{{1, 1, 3}, {1, 0, 3}, {1, 0, 0}, {2, 0, 0}},
-                        {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}, {0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {3, 0, 0}, {4, 0, 0}}});
+  const auto v = check(
+      map, {dot("a", {1, 1, 3}, {2, 0, 0}), dot("b", {0, 0, 0}, {4, 0, 0})},
+      {{{1, 1, 3}, {1, 0, 3}, {1, 0, 0}, {2, 0, 0}},
+       {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}, {0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {3, 0, 0}, {4, 0, 0}}});
   EXPECT_EQ(v.kind, Kind::VertexConflict);
   EXPECT_EQ(v.time, 5);
 }
@@ -137,13 +146,85 @@ TEST(PlanValidator, ArrivedRobotsStayAtTheirTargets) {
 TEST(PlanValidator, LargeFootprintsConflictAcrossCells) {
   // Two circles of radius 1 (3 x 3 cells) three cells apart are clear; two apart they overlap.
   const GridMap map = freeMap(8, 3);
-  auto big = [](const std::string& id, GridPose s, GridPose t) { return robot(id, Footprint::circle(1.0), s, t); };
-  EXPECT_EQ(check(map, {big("a", {1, 1, 0}, {1, 1, 0}), big("b", {4, 1, 1}, {4, 1, 1})}, {{{1, 1, 0}}, {{4, 1, 1}}}).kind,
+  auto big = [](const std::string& id, GridPose s, GridPose t) {
+    return robot(id, Footprint::circle(1.0), s, t);
+  };
+  EXPECT_EQ(check(map, {big("a", {1, 1, 0}, {1, 1, 0}), big("b", {4, 1, 1}, {4, 1, 1})},
+                  {{{1, 1, 0}}, {{4, 1, 1}}})
+                .kind,
             Kind::None);
   EXPECT_EQ(check(map, {big("a", {1, 1, 0}, {1, 1, 0}), big("b", {4, 1, 1}, {3, 1, 1})},
                   {{{1, 1, 0}}, {{4, 1, 1}, {3, 1, 1}}})
                 .kind,
             Kind::VertexConflict);
+}
+
+// The first violation found with a broad phase (pairs whose boxes overlap) is the one a check of
+// every pair at every step finds: same time, kind and robots, on random walks of mixed robots on
+// a small map (most walks collide somewhere, some do not).
+TEST(PlanValidatorDifferential, BroadPhaseFindsTheFirstConflictOfEveryPair) {
+  const GridMap map = freeMap(10, 10);
+  const std::vector<Footprint> kinds{Footprint::circle(0.4), Footprint::block(-0.5, -0.5, 1.5, 0.5),
+                                     Footprint::circle(0.9)};
+  Rng rng(21);
+  int conflicts = 0, clean = 0;
+  for (int round = 0; round < 300; ++round) {
+    const int n = 2 + static_cast<int>(rng.uniformInt(0, 3));
+    std::vector<Footprint> footprints;
+    for (int i = 0; i < n; ++i) footprints.push_back(kinds[rng.uniformInt(0, 2)]);
+    const FleetGraphs graphs(map, footprints);
+    std::vector<Robot> robots;
+    std::vector<Path> paths;
+    for (int i = 0; i < n; ++i) {
+      const StateGraph& g = graphs.graph(i);
+      StateId s = kNoState;
+      while (s == kNoState || !g.valid(s)) {
+        s = g.id({static_cast<int>(rng.uniformInt(0, 9)), static_cast<int>(rng.uniformInt(0, 9)),
+                  static_cast<int>(rng.uniformInt(0, 3))});
+      }
+      Path p{g.pose(s)};
+      for (int t = 0, len = static_cast<int>(rng.uniformInt(0, 8)); t < len; ++t) {
+        std::vector<StateId> next{s};
+        g.forEachSuccessor(s, [&](Action, StateId x) { next.push_back(x); });
+        s = next[rng.uniformInt(0, static_cast<std::int64_t>(next.size()) - 1)];
+        p.push_back(g.pose(s));
+      }
+      robots.push_back(robot("r" + std::to_string(i), footprints[i], p.front(), p.back()));
+      paths.push_back(p);
+    }
+    // Reference: every pair at every step, in the validator's order.
+    std::vector<FootprintCells> cells;
+    for (const Footprint& f : footprints) cells.emplace_back(f);
+    int horizon = 0;
+    for (const Path& p : paths) horizon = std::max(horizon, static_cast<int>(p.size()) - 1);
+    auto at = [&](int i, int t) { return paths[i][std::min<std::size_t>(t, paths[i].size() - 1)]; };
+    Violation expected;
+    auto vertex = [&](int t) {
+      for (int i = 0; i < n && expected.kind == Kind::None; ++i)
+        for (int j = i + 1; j < n && expected.kind == Kind::None; ++j)
+          if (footprintsOverlap(cells[i], at(i, t), cells[j], at(j, t)))
+            expected = {Kind::VertexConflict, i, j, t};
+    };
+    vertex(0);
+    for (int t = 0; t < horizon && expected.kind == Kind::None; ++t) {
+      vertex(t + 1);
+      for (int i = 0; i < n && expected.kind == Kind::None; ++i)
+        for (int j = i + 1; j < n && expected.kind == Kind::None; ++j) {
+          const Action ai = *actionBetween(at(i, t), at(i, t + 1), ActionModel{});
+          const Action aj = *actionBetween(at(j, t), at(j, t + 1), ActionModel{});
+          if (sweepsOverlap(cells[i], at(i, t), ai, cells[j], at(j, t), aj))
+            expected = {Kind::TransferConflict, i, j, t};
+        }
+    }
+    const Violation v = check(map, robots, paths);
+    ASSERT_EQ(v.kind, expected.kind) << "round " << round << ": " << v.message;
+    EXPECT_EQ(v.robot, expected.robot) << "round " << round;
+    EXPECT_EQ(v.other, expected.other) << "round " << round;
+    EXPECT_EQ(v.time, expected.time) << "round " << round;
+    (v.kind == Kind::None ? clean : conflicts) += 1;
+  }
+  EXPECT_GT(conflicts, 50);
+  EXPECT_GT(clean, 20);
 }
 
 }  // namespace
