@@ -28,14 +28,19 @@ StatePath randomWalk(const SearchSpace& space, int a, int steps, Rng& rng) {
   return path;
 }
 
+// Five robots of every footprint kind on a 12 x 12 map (where they stand matters not: the tests
+// walk them at random from there).
+std::vector<Robot> mixedRobots() {
+  return {dot("d", {1, 1, 0}, {1, 1, 0}), bar("b", {5, 5, 0}, {5, 5, 0}),
+          triangle("p", {9, 2, 1}, {9, 2, 1}),
+          makeRobot("c", Footprint::circle(0.9), {3, 8, 2}, {3, 8, 2}),
+          bar("e", {8, 9, 1}, {8, 9, 1})};
+}
+
 // The table's collision graph is the one the backends' own conflict code finds, on random walks
 // of robots of every footprint kind, of different lengths (ended paths stay put).
 TEST(SoftPathTable, PartnersAgreeWithConflictingPairs) {
-  std::vector<Robot> robots{dot("d", {1, 1, 0}, {1, 1, 0}), bar("b", {5, 5, 0}, {5, 5, 0}),
-                            triangle("p", {9, 2, 1}, {9, 2, 1}),
-                            makeRobot("c", Footprint::circle(0.9), {3, 8, 2}, {3, 8, 2}),
-                            bar("e", {8, 9, 1}, {8, 9, 1})};
-  const World w(freeMap(12, 12), robots);
+  const World w(freeMap(12, 12), mixedRobots());
   const Subproblem sub = allRobots(w);
   const SearchSpace space(sub);
   Rng rng(5);
@@ -67,11 +72,7 @@ TEST(SoftPathTable, PartnersAgreeWithConflictingPairs) {
 // included, so runs of several steps occur), a step is unsafe exactly when some run or the
 // "for good" bound covers it.
 TEST(SoftPathTable, UnsafeRunsAgreeWithStepQueries) {
-  std::vector<Robot> robots{dot("d", {1, 1, 0}, {1, 1, 0}), bar("b", {5, 5, 0}, {5, 5, 0}),
-                            triangle("p", {9, 2, 1}, {9, 2, 1}),
-                            makeRobot("c", Footprint::circle(0.9), {3, 8, 2}, {3, 8, 2}),
-                            bar("e", {8, 9, 1}, {8, 9, 1})};
-  const World w(freeMap(12, 12), robots);
+  const World w(freeMap(12, 12), mixedRobots());
   const Subproblem sub = allRobots(w);
   const SearchSpace space(sub);
   Rng rng(9);
