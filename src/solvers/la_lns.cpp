@@ -50,6 +50,7 @@ class LnsSearch {
       StatePath path;
       if (std::optional<SolveResult> stop = initialPath(a, path)) return *stop;
       table_.insert(a, path);
+      ++planned_;
     }
     for (int a = 0; a < n_; ++a) partners_[a] = table_.partners(a);
     while (true) {
@@ -76,6 +77,11 @@ class LnsSearch {
   }
 
   SolveResult timeout(const std::string& why) const {
+    if (planned_ < n_) {
+      return failedResult(SolveStatus::Timeout, why + " during the first plan (" +
+                                                    std::to_string(planned_) + " of " +
+                                                    std::to_string(n_) + " robots planned)");
+    }
     return failedResult(SolveStatus::Timeout, why + " with " + std::to_string(collidingPairs()) +
                                                   " colliding pairs of robots left");
   }
@@ -92,7 +98,8 @@ class LnsSearch {
     const StatePath& ideal = idealPath(a);
     if (ideal.empty()) {
       if (const std::optional<SolveResult> stop = outOfBudget()) return stop;
-      if (!ideal_absent_[a]) return timeout(space_.label(a) + "'s first path search ran out of nodes");
+      if (!ideal_absent_[a])
+        return timeout(space_.label(a) + "'s first path search ran out of nodes");
       return failedResult(
           SolveStatus::Infeasible,
           space_.label(a) + " cannot reach its target around the other subproblems' robots");
@@ -340,7 +347,8 @@ class LnsSearch {
   std::vector<std::vector<int>> partners_;  // sorted; symmetric: the collision graph
   std::vector<StatePath> ideal_;
   std::vector<bool> ideal_absent_;  // the search proved there is no such path
-  std::vector<int> escalation_;  // per agent: factor of the collision cost
+  std::vector<int> escalation_;     // per agent: factor of the collision cost
+  int planned_ = 0;                 // robots with a path in the first plan so far
   std::array<double, kMethods> weights_;
 };
 
