@@ -4,6 +4,8 @@
 #include <queue>
 #include <unordered_map>
 
+#include "node_table.h"
+
 namespace fleet_planner {
 
 namespace {
@@ -114,7 +116,7 @@ SafeIntervalResult safeIntervalSearch(const SearchSpace& space, int a, const Sof
   if (first.empty() || first.front().first != 0) return result;  // someone sweeps the start at once
 
   std::vector<Node> nodes;
-  std::unordered_map<std::uint64_t, int> best;  // (state, interval) -> node
+  NodeTable best;  // (state, interval) -> node
   auto key = [](StateId s, int i) {
     return (static_cast<std::uint64_t>(i) << 32) | static_cast<std::uint32_t>(s);
   };
@@ -127,9 +129,9 @@ SafeIntervalResult safeIntervalSearch(const SearchSpace& space, int a, const Sof
   std::priority_queue<int, std::vector<int>, decltype(worse)> open(worse);
   auto push = [&](StateId s, int interval, int arrival, int parent) {
     const std::uint64_t k = key(s, interval);
-    const auto it = best.find(k);
-    if (it != best.end() && nodes[it->second].g <= arrival) return;
-    best[k] = static_cast<int>(nodes.size());
+    const int* known = best.find(k);
+    if (known != nullptr && nodes[*known].g <= arrival) return;
+    best.set(k, static_cast<int>(nodes.size()));
     nodes.push_back({s, interval, arrival, arrival + space.distance(a, s), parent});
     open.push(static_cast<int>(nodes.size()) - 1);
   };
@@ -147,7 +149,7 @@ SafeIntervalResult safeIntervalSearch(const SearchSpace& space, int a, const Sof
     const int index = open.top();
     open.pop();
     const Node node = nodes[index];
-    if (best.at(key(node.s, node.interval)) != index) continue;
+    if (*best.find(key(node.s, node.interval)) != index) continue;
     ++result.expansions;
     const Interval here = sipp.intervals(node.s)[node.interval];
     if (node.s == target && here.last == kNever) {

@@ -2,9 +2,9 @@
 
 #include <algorithm>
 #include <queue>
-#include <unordered_map>
 
 #include "fleet_planner/solvers/space_time_astar.h"
+#include "node_table.h"
 
 namespace fleet_planner {
 
@@ -40,7 +40,7 @@ SoftSearchResult softPathSearch(const SearchSpace& space, int a, const SoftPathT
   const int w = options.collision_cost;
 
   std::vector<Node> nodes;
-  std::unordered_map<std::uint64_t, int> seen;
+  NodeTable seen;
   auto key = [](StateId s, int t, bool finished) {
     return (static_cast<std::uint64_t>(t) << 33) | (static_cast<std::uint64_t>(finished) << 32) |
            static_cast<std::uint32_t>(s);
@@ -58,9 +58,9 @@ SoftSearchResult softPathSearch(const SearchSpace& space, int a, const SoftPathT
   };
   auto push = [&](const Node& n) {
     const std::uint64_t k = key(n.s, n.t, n.finished);
-    const auto it = seen.find(k);
-    if (it != seen.end() && nodes[it->second].g <= n.g) return;
-    seen[k] = static_cast<int>(nodes.size());
+    const int* known = seen.find(k);
+    if (known != nullptr && nodes[*known].g <= n.g) return;
+    seen.set(k, static_cast<int>(nodes.size()));
     nodes.push_back(n);
     open.push(static_cast<int>(nodes.size()) - 1);
   };
@@ -79,7 +79,7 @@ SoftSearchResult softPathSearch(const SearchSpace& space, int a, const SoftPathT
     const int index = open.top();
     open.pop();
     const Node node = nodes[index];
-    if (seen.at(key(node.s, node.t, node.finished)) != index) continue;  // superseded
+    if (*seen.find(key(node.s, node.t, node.finished)) != index) continue;  // superseded
     ++result.expansions;
     if (node.finished) {
       for (int i = node.parent; i >= 0; i = nodes[i].parent) result.path.push_back(nodes[i].s);

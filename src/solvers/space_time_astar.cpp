@@ -3,7 +3,8 @@
 #include <algorithm>
 #include <memory>
 #include <queue>
-#include <unordered_map>
+
+#include "node_table.h"
 
 namespace fleet_planner {
 
@@ -16,45 +17,6 @@ Action stepAction(const StateGraph& graph, StateId from, StateId to) {
 }
 
 namespace {
-
-// (state, time) -> node index, open addressing: one allocation, freed at once when the
-// deadline comes (a node-per-entry hash map of millions of nodes takes most of a second).
-class NodeTable {
- public:
-  NodeTable() : slots_(1 << 12, {~0ULL, -1}) {}
-  int* find(std::uint64_t key) {
-    for (std::size_t i = slot(key);; i = (i + 1) & (slots_.size() - 1)) {
-      if (slots_[i].first == key) return &slots_[i].second;
-      if (slots_[i].second < 0) return nullptr;
-    }
-  }
-  void set(std::uint64_t key, int node) {
-    if (int* existing = find(key)) {
-      *existing = node;
-      return;
-    }
-    if (2 * (size_ + 1) > slots_.size()) grow();
-    place(key, node);
-    ++size_;
-  }
-
- private:
-  std::size_t slot(std::uint64_t key) const { return (key * 0x9e3779b97f4a7c15ULL >> 20) & (slots_.size() - 1); }
-  void place(std::uint64_t key, int node) {
-    std::size_t i = slot(key);
-    while (slots_[i].second >= 0) i = (i + 1) & (slots_.size() - 1);
-    slots_[i] = {key, node};
-  }
-  void grow() {
-    std::vector<std::pair<std::uint64_t, int>> old(slots_.size() * 2, {~0ULL, -1});
-    old.swap(slots_);
-    for (const auto& [key, node] : old) {
-      if (node >= 0) place(key, node);
-    }
-  }
-  std::vector<std::pair<std::uint64_t, int>> slots_;
-  std::size_t size_ = 0;
-};
 
 // Area constraints stay for good once they start, and from `static_from` nothing changes at
 // all. An area may cut the target off or force a long way round, which the plain distance

@@ -1,0 +1,50 @@
+#pragma once
+#include <cstddef>
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+namespace fleet_planner {
+
+/// Search key (a state with its time, interval or flags, packed in 64 bits; never ~0) -> node
+/// index, open addressing: one allocation, freed at once when the deadline comes (a
+/// node-per-entry hash map of millions of nodes takes most of a second). Shared by the
+/// space-time searches of the backends.
+class NodeTable {
+ public:
+  NodeTable() : slots_(1 << 12, {~0ULL, -1}) {}
+  int* find(std::uint64_t key) {
+    for (std::size_t i = slot(key);; i = (i + 1) & (slots_.size() - 1)) {
+      if (slots_[i].first == key) return &slots_[i].second;
+      if (slots_[i].second < 0) return nullptr;
+    }
+  }
+  void set(std::uint64_t key, int node) {
+    if (int* existing = find(key)) {
+      *existing = node;
+      return;
+    }
+    if (2 * (size_ + 1) > slots_.size()) grow();
+    place(key, node);
+    ++size_;
+  }
+
+ private:
+  std::size_t slot(std::uint64_t key) const { return (key * 0x9e3779b97f4a7c15ULL >> 20) & (slots_.size() - 1); }
+  void place(std::uint64_t key, int node) {
+    std::size_t i = slot(key);
+    while (slots_[i].second >= 0) i = (i + 1) & (slots_.size() - 1);
+    slots_[i] = {key, node};
+  }
+  void grow() {
+    std::vector<std::pair<std::uint64_t, int>> old(slots_.size() * 2, {~0ULL, -1});
+    old.swap(slots_);
+    for (const auto& [key, node] : old) {
+      if (node >= 0) place(key, node);
+    }
+  }
+  std::vector<std::pair<std::uint64_t, int>> slots_;
+  std::size_t size_ = 0;
+};
+
+}  // namespace fleet_planner
