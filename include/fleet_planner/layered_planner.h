@@ -38,8 +38,8 @@ struct LayeredOptions {
   /// Backend tried on a subproblem that `backend` fails, before the safeguard merges it
   /// (subproblem_solving.h); "" for none. It must plan around moving obstacles if `backend` does.
   std::string fallback;
-  bool refine = true;    ///< replan robots one at a time around the others (plan_refinement.h)
-  bool compress = true;  ///< drop every wait that no conflict needs (plan_compression.h)
+  bool refine = true;     ///< replan robots one at a time around the others (plan_refinement.h)
+  bool compress = true;   ///< drop every wait that no conflict needs (plan_compression.h)
   std::uint64_t seed = 0;
 };
 
@@ -48,7 +48,7 @@ struct LayeredResult {
   std::string reason;
   Plan plan;  ///< on success: one path per robot, instance order, validated
   PlanMetrics metrics;
-  Decomposition decomposition;                ///< as computed (before any merge)
+  Decomposition decomposition;               ///< as computed (before any merge)
   std::vector<SolvedSubproblem> subproblems;  ///< as solved, in order
   std::vector<std::string> merges;            ///< one line per safeguard merge
   RefinementStats refinement;                 ///< of the merged plan

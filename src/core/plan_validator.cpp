@@ -30,8 +30,7 @@ struct Box {
 
 Box boxOf(const CellSet& set, const GridPose& origin) {
   if (set.empty()) return {1, 1, 0, 0};
-  return {origin.x + set.minX(), origin.y + set.minY(), origin.x + set.maxX(),
-          origin.y + set.maxY()};
+  return {origin.x + set.minX(), origin.y + set.minY(), origin.x + set.maxX(), origin.y + set.maxY()};
 }
 
 // The pairs (i < j) whose boxes share a cell, sorted: the only pairs whose sets can overlap
@@ -45,12 +44,10 @@ std::vector<std::pair<int, int>> overlappingBoxes(const std::vector<Box>& boxes)
   for (int k : order) {
     const Box& b = boxes[k];
     if (b.x0 > b.x1) continue;
-    active.erase(
-        std::remove_if(active.begin(), active.end(), [&](int m) { return boxes[m].x1 < b.x0; }),
-        active.end());
+    active.erase(std::remove_if(active.begin(), active.end(), [&](int m) { return boxes[m].x1 < b.x0; }),
+                 active.end());
     for (int m : active) {
-      if (boxes[m].y0 <= b.y1 && b.y0 <= boxes[m].y1)
-        pairs.emplace_back(std::min(k, m), std::max(k, m));
+      if (boxes[m].y0 <= b.y1 && b.y0 <= boxes[m].y1) pairs.emplace_back(std::min(k, m), std::max(k, m));
     }
     active.push_back(k);
   }
@@ -82,22 +79,19 @@ class Checker {
                     "path ends at " + toString(p.back()) + ", target is " + toString(r.target));
       for (const GridPose& s : p) {
         if (!validHeading(s.heading))
-          return fail(Violation::Kind::IllegalAction, i, -1, -1,
-                      "heading of " + toString(s) + " is not 0..3");
+          return fail(Violation::Kind::IllegalAction, i, -1, -1, "heading of " + toString(s) + " is not 0..3");
       }
     }
     cells_.reserve(n);
-    for (const Robot& r : instance_.robots)
-      cells_.push_back(std::make_unique<FootprintCells>(r.footprint));
+    for (const Robot& r : instance_.robots) cells_.push_back(std::make_unique<FootprintCells>(r.footprint));
 
     int horizon = 0;
     for (const Path& p : plan_.paths) horizon = std::max(horizon, static_cast<int>(p.size()) - 1);
 
     for (int i = 0; i < n; ++i) {
       if (!cellsFree(map_, cells_[i]->body(plan_.paths[i][0].heading), plan_.paths[i][0]))
-        return fail(
-            Violation::Kind::StateInObstacle, i, -1, 0,
-            "footprint at " + toString(plan_.paths[i][0]) + " covers a blocked or off-map cell");
+        return fail(Violation::Kind::StateInObstacle, i, -1, 0,
+                    "footprint at " + toString(plan_.paths[i][0]) + " covers a blocked or off-map cell");
     }
     if (Violation v = vertexConflicts(0); v.kind != Violation::Kind::None) return v;
 
@@ -155,8 +149,7 @@ class Checker {
     return {};
   }
 
-  Violation fail(Violation::Kind kind, int robot, int other, int time,
-                 const std::string& what) const {
+  Violation fail(Violation::Kind kind, int robot, int other, int time, const std::string& what) const {
     Violation v;
     v.kind = kind;
     v.robot = robot;

@@ -24,10 +24,10 @@ LayeredResult planLayered(const GridMap& map, const Instance& instance, const Fl
   LayeredResult result;
   // Unknown backends throw InvalidInput before any work.
   const bool serial = makeSolver(options.backend)->avoidsMovingObstacles();
-  if (!options.fallback.empty() && serial && !makeSolver(options.fallback)->avoidsMovingObstacles())
-    throw InvalidInput("fallback backend '" + options.fallback +
-                       "' cannot plan around moving obstacles, which backend '" + options.backend +
-                       "' hands on");
+  if (!options.fallback.empty() && serial && !makeSolver(options.fallback)->avoidsMovingObstacles()) {
+    throw InvalidInput("fallback backend '" + options.fallback + "' cannot plan around moving obstacles, which " +
+                       "backend '" + options.backend + "' hands on");
+  }
   const int n = static_cast<int>(instance.robots.size());
 
   // 1. Decomposition. It needs every robot to reach its target alone: an instance that fails the
@@ -39,8 +39,7 @@ LayeredResult planLayered(const GridMap& map, const Instance& instance, const Fl
     if (!report.solvable()) {
       result.status = SolveStatus::Infeasible;
       result.reason = report.problems.front().reason;
-      if (report.problems.size() > 1)
-        result.reason += " (and " + std::to_string(report.problems.size() - 1) + " more)";
+      if (report.problems.size() > 1) result.reason += " (and " + std::to_string(report.problems.size() - 1) + " more)";
       result.decompose_s = since(t);
       return result;
     }
@@ -49,8 +48,7 @@ LayeredResult planLayered(const GridMap& map, const Instance& instance, const Fl
     d.threads = options.threads;
     // At most half of the time: a decomposition cut short is still legal (coarser), and the
     // subproblems need time too.
-    result.decomposition =
-        decompose(instance, graphs, d, deadline.within(deadline.remaining() * 0.5));
+    result.decomposition = decompose(instance, graphs, d, deadline.within(deadline.remaining() * 0.5));
     for (const auto& s : result.decomposition.subproblems) {
       SolvedSubproblem solved;
       solved.robots = s.robots;
@@ -79,8 +77,7 @@ LayeredResult planLayered(const GridMap& map, const Instance& instance, const Fl
   solving_options.fallback = options.fallback;
   solving_options.threads = options.threads;
   solving_options.seed = options.seed;
-  SubproblemSolving solved =
-      solveSubproblems(instance, graphs, std::move(order), solving_options, deadline);
+  SubproblemSolving solved = solveSubproblems(instance, graphs, std::move(order), solving_options, deadline);
   result.solve_s = since(t);
   result.subproblems = std::move(solved.order);
   result.merges = std::move(solved.merges);

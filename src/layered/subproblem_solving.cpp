@@ -19,20 +19,23 @@ constexpr long long kChainExpansionsPerRobot = 50'000;
 
 std::string idsOf(const Instance& instance, const std::vector<int>& robots) {
   std::string out;
-  for (std::size_t k = 0; k < robots.size() && k < 6; ++k)
-    out += (k ? "," : "") + instance.robots[robots[k]].id;
+  for (std::size_t k = 0; k < robots.size() && k < 6; ++k) out += (k ? "," : "") + instance.robots[robots[k]].id;
   if (robots.size() > 6) out += ",... (" + std::to_string(robots.size()) + " robots)";
   return out;
 }
 
+// A subproblem's statistics count every attempt at it.
+void addEarlierAttempt(SolveStats& stats, const SolveStats& earlier) {
+  stats.time_s += earlier.time_s;
+  stats.low_level_expansions += earlier.low_level_expansions;
+  stats.high_level_nodes += earlier.high_level_nodes;
+}
+
 class Solving {
  public:
-  Solving(const Instance& instance, const FleetGraphs& graphs,
-          const SubproblemSolvingOptions& options, const Deadline& deadline)
-      : instance_(instance),
-        graphs_(graphs),
-        options_(options),
-        deadline_(deadline),
+  Solving(const Instance& instance, const FleetGraphs& graphs, const SubproblemSolvingOptions& options,
+          const Deadline& deadline)
+      : instance_(instance), graphs_(graphs), options_(options), deadline_(deadline),
         serial_(makeSolver(options.backend)->avoidsMovingObstacles()) {}
 
   SubproblemSolving run(std::vector<SolvedSubproblem> order) {
@@ -50,8 +53,8 @@ class Solving {
                      : deadline_.cancelled() ? SolveStatus::Cancelled
                      : deadline_.expired()   ? SolveStatus::Timeout
                                              : failed.status;
-        out.reason = "subproblem " + std::to_string(k) + " (" + idsOf(instance_, order_[k].robots) +
-                     "): " + (results_[k] ? failed.reason : std::string("not solved"));
+        out.reason = "subproblem " + std::to_string(k) + " (" + idsOf(instance_, order_[k].robots) + "): " +
+                     (results_[k] ? failed.reason : std::string("not solved"));
         out.order = order_;
         out.merges = merges_;
         return out;
@@ -77,8 +80,7 @@ class Solving {
                          failed_clusters.end()) {
         continue;
       }
-      const bool chained = serial_ && !units.empty() &&
-                           order_[units.back().back()].cluster == order_[k].cluster &&
+      const bool chained = serial_ && !units.empty() && order_[units.back().back()].cluster == order_[k].cluster &&
                            units.back().back() + 1 == k;
       if (chained) {
         units.back().push_back(k);
@@ -105,8 +107,7 @@ class Solving {
         }
       }
     };
-    const int threads =
-        std::max(1, std::min<int>(options_.threads, static_cast<int>(units.size())));
+    const int threads = std::max(1, std::min<int>(options_.threads, static_cast<int>(units.size())));
     std::vector<std::thread> pool;
     for (int t = 1; t < threads; ++t) pool.emplace_back(work);
     work();
@@ -136,25 +137,22 @@ class Solving {
     // A time share: at least a quarter of what is left, more for a larger part of the robots
     // being solved; the last subproblem gets all of it. A share that runs out triggers the
     // safeguard.
-    const double share =
-        k + 1 == order_.size()
-            ? 1.0
-            : std::max(0.25, static_cast<double>(sub.robots.size()) / std::max(1, pending_robots_));
+    const double share = k + 1 == order_.size()
+                             ? 1.0
+                             : std::max(0.25, static_cast<double>(sub.robots.size()) / std::max(1, pending_robots_));
     const Deadline share_deadline = deadline_.within(deadline_.remaining() * share);
     const bool has_fallback = !options_.fallback.empty() && options_.fallback != options_.backend;
-    sub.deadline =
-        has_fallback
-            ? share_deadline.within(share_deadline.remaining() * (1.0 - options_.fallback_share))
-            : share_deadline;
+    const double first_part = has_fallback ? 1.0 - options_.fallback_share : 1.0;
+    sub.deadline = share_deadline.within(share_deadline.remaining() * first_part);
     // Around many timed paths, a low-level search can take long to find the gaps between them.
     // Past a budget, the level is planned as a parallel backend would (the earlier levels of its
     // cluster at their targets) and delayed until it fits among them, which always works.
     const bool around_paths = !sub.moving.empty();
-    if (around_paths)
-      sub.max_expansions = kChainExpansionsPerRobot * static_cast<long long>(sub.robots.size());
+    if (around_paths) sub.max_expansions = kChainExpansionsPerRobot * static_cast<long long>(sub.robots.size());
     SolveResult solved = makeSolver(options_.backend)->solve(sub);
     const bool fallback = around_paths && !solved.success() && !sub.deadline.expired();
     if (fallback) solved = solveThenDelay(sub, solved.stats);
+    // The fallback backend, in the rest of the share, for what the backend failed to solve.
     bool by_fallback = false;
     if (has_fallback && !solved.success() && solved.status != SolveStatus::Infeasible &&
         !share_deadline.expired()) {
@@ -162,12 +160,10 @@ class Solving {
       again.deadline = share_deadline;
       again.max_expansions = -1;
       SolveResult second = makeSolver(options_.fallback)->solve(again);
-      second.stats.time_s += solved.stats.time_s;
-      second.stats.low_level_expansions += solved.stats.low_level_expansions;
-      second.stats.high_level_nodes += solved.stats.high_level_nodes;
-      if (!second.success())
-        second.reason = options_.backend + ": " + solved.reason + "; " + options_.fallback + ": " +
-                        second.reason;
+      addEarlierAttempt(second.stats, solved.stats);
+      if (!second.success()) {
+        second.reason = options_.backend + ": " + solved.reason + "; " + options_.fallback + ": " + second.reason;
+      }
       by_fallback = second.success();
       solved = std::move(second);
     }
@@ -196,9 +192,7 @@ class Solving {
     sub.moving.clear();
     sub.max_expansions = -1;
     SolveResult solved = makeSolver(options_.backend)->solve(sub);
-    solved.stats.time_s += first_attempt.time_s;
-    solved.stats.low_level_expansions += first_attempt.low_level_expansions;
-    solved.stats.high_level_nodes += first_attempt.high_level_nodes;
+    addEarlierAttempt(solved.stats, first_attempt);
     if (solved.success()) delayToFit(graphs_, earlier, done, sub.robots, solved.paths);
     return solved;
   }
@@ -208,13 +202,12 @@ class Solving {
   void mergeWithNeighbour(std::size_t k, const SolveResult& failed) {
     const std::size_t other = k + 1 < order_.size() ? k + 1 : k - 1;
     const std::size_t first = std::min(k, other);
-    merges_.push_back("subproblem " + std::to_string(k) + " (" +
-                      idsOf(instance_, order_[k].robots) +
-                      ") failed: " + (results_[k] ? failed.reason : std::string("not solved")) +
-                      " (after " + std::to_string(failed.stats.time_s).substr(0, 5) + " s, " +
+    merges_.push_back("subproblem " + std::to_string(k) + " (" + idsOf(instance_, order_[k].robots) + ") failed: " +
+                      (results_[k] ? failed.reason : std::string("not solved")) + " (after " +
+                      std::to_string(failed.stats.time_s).substr(0, 5) + " s, " +
                       std::to_string(failed.stats.high_level_nodes) + " high-level nodes, " +
-                      std::to_string(failed.stats.low_level_expansions) +
-                      " expansions); merged with subproblem " + std::to_string(other));
+                      std::to_string(failed.stats.low_level_expansions) + " expansions); merged with subproblem " +
+                      std::to_string(other));
     const int keep = order_[first].cluster, gone = order_[first + 1].cluster;
     for (auto& s : order_) {
       if (s.cluster == gone) s.cluster = keep;
@@ -227,8 +220,7 @@ class Solving {
     results_.erase(results_.begin() + static_cast<std::ptrdiff_t>(first) + 1);
     results_[first].reset();
     if (serial_) {
-      for (std::size_t m = first + 1; m < order_.size() && order_[m].cluster == keep; ++m)
-        results_[m].reset();
+      for (std::size_t m = first + 1; m < order_.size() && order_[m].cluster == keep; ++m) results_[m].reset();
     }
   }
 
@@ -273,8 +265,7 @@ class Solving {
 }  // namespace
 
 SubproblemSolving solveSubproblems(const Instance& instance, const FleetGraphs& graphs,
-                                   std::vector<SolvedSubproblem> order,
-                                   const SubproblemSolvingOptions& options,
+                                   std::vector<SolvedSubproblem> order, const SubproblemSolvingOptions& options,
                                    const Deadline& deadline) {
   return Solving(instance, graphs, options, deadline).run(std::move(order));
 }

@@ -24,9 +24,7 @@ using Response = fleet_planner::PlanFleet::Response;
 using RobotResultMsg = fleet_planner::RobotResult;
 using Clock = std::chrono::steady_clock;
 
-double since(Clock::time_point t0) {
-  return std::chrono::duration<double>(Clock::now() - t0).count();
-}
+double since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
 std::string number(double v) {
   char buf[32];
@@ -82,20 +80,13 @@ struct TaskState {
 /// Fleet status for the first robot error of each kind, most fundamental first.
 std::uint8_t fleetStatusFor(std::uint8_t robot_status) {
   switch (robot_status) {
-    case RobotResultMsg::UNKNOWN_ROBOT:
-      return Response::UNKNOWN_ROBOT;
-    case RobotResultMsg::INVALID_FOOTPRINT:
-      return Response::INVALID_REQUEST;
-    case RobotResultMsg::NO_TRANSFORM:
-      return Response::NO_TRANSFORM;
-    case RobotResultMsg::INVALID_START:
-      return Response::INVALID_START;
-    case RobotResultMsg::INVALID_GOAL:
-      return Response::INVALID_GOAL;
-    case RobotResultMsg::UNREACHABLE:
-      return Response::INFEASIBLE;
-    default:
-      return Response::INVALID_REQUEST;
+    case RobotResultMsg::UNKNOWN_ROBOT: return Response::UNKNOWN_ROBOT;
+    case RobotResultMsg::INVALID_FOOTPRINT: return Response::INVALID_REQUEST;
+    case RobotResultMsg::NO_TRANSFORM: return Response::NO_TRANSFORM;
+    case RobotResultMsg::INVALID_START: return Response::INVALID_START;
+    case RobotResultMsg::INVALID_GOAL: return Response::INVALID_GOAL;
+    case RobotResultMsg::UNREACHABLE: return Response::INFEASIBLE;
+    default: return Response::INVALID_REQUEST;
   }
 }
 
@@ -125,11 +116,10 @@ bool failOnRobotErrors(PlanCall& call) {
   std::uint8_t status = fleetStatusFor(first->status);
   if (first->status == RobotResultMsg::CONFLICT) {
     status = first->message.find("start overlaps") != std::string::npos ? Response::INVALID_START
-                                                                        : Response::INVALID_GOAL;
+                                                                         : Response::INVALID_GOAL;
   }
   std::string message = first->message;
-  if (errors > 1)
-    message += " (and " + std::to_string(errors - 1) + " more robot errors, see robots)";
+  if (errors > 1) message += " (and " + std::to_string(errors - 1) + " more robot errors, see robots)";
   fail(call, status, message);
   for (auto& r : robots) {
     if (r.status == RobotResultMsg::OK) {
@@ -143,24 +133,18 @@ bool failOnRobotErrors(PlanCall& call) {
 /// Robots still OK after a failure that is not theirs (a limit, the deadline) were not planned.
 void markNotPlanned(PlanCall& call) {
   for (auto& r : call.response.robots) {
-    if (r.status == RobotResultMsg::OK)
-      r.status = RobotResultMsg::NOT_PLANNED, r.message = "not planned: " + call.response.message;
+    if (r.status == RobotResultMsg::OK) r.status = RobotResultMsg::NOT_PLANNED, r.message = "not planned: " + call.response.message;
   }
 }
 
 std::uint8_t responseStatus(SolveStatus status) {
   switch (status) {
-    case SolveStatus::Success:
-      return Response::SUCCESS;
+    case SolveStatus::Success: return Response::SUCCESS;
     case SolveStatus::Timeout:
-    case SolveStatus::Cancelled:
-      return Response::TIMEOUT;
-    case SolveStatus::Infeasible:
-      return Response::INFEASIBLE;
-    case SolveStatus::InvalidInput:
-      return Response::INVALID_REQUEST;
-    case SolveStatus::ResourceLimit:
-      return Response::RESOURCE_LIMIT;
+    case SolveStatus::Cancelled: return Response::TIMEOUT;
+    case SolveStatus::Infeasible: return Response::INFEASIBLE;
+    case SolveStatus::InvalidInput: return Response::INVALID_REQUEST;
+    case SolveStatus::ResourceLimit: return Response::RESOURCE_LIMIT;
   }
   return Response::INTERNAL_ERROR;
 }
@@ -169,16 +153,14 @@ std::uint8_t responseStatus(SolveStatus status) {
 
 void FleetPlanningService::setMap(const nav_msgs::OccupancyGrid& grid) {
   try {
-    checkMapCells(grid.info.width, grid.info.height, config_.resourceLimits(),
-                  "map");  // before allocating
+    checkMapCells(grid.info.width, grid.info.height, config_.resourceLimits(), "map");  // before allocating
   } catch (const ResourceLimitError& e) {
     std::lock_guard<std::mutex> lock(mutex_);
     map_refused_ = e.what();  // calls without an earlier map answer RESOURCE_LIMIT with this
     throw;
   }
   auto snapshot = std::make_shared<MapSnapshot>();
-  snapshot->grid =
-      convert(grid, config_.occupancyPolicy());  // throws InvalidInput: keep the old map
+  snapshot->grid = convert(grid, config_.occupancyPolicy());  // throws InvalidInput: keep the old map
   std::lock_guard<std::mutex> lock(mutex_);
   snapshot->version = ++map_version_;
   map_ = std::move(snapshot);
@@ -197,16 +179,15 @@ bool FleetPlanningService::hasMap() const {
   return map_ != nullptr;
 }
 
-std::shared_ptr<const FleetGraphs> FleetPlanningService::graphsFor(
-    const MapSnapshot& map, const std::vector<Footprint>& footprints, bool& cached,
-    const Deadline& deadline) {
+std::shared_ptr<const FleetGraphs> FleetPlanningService::graphsFor(const MapSnapshot& map,
+                                                                   const std::vector<Footprint>& footprints,
+                                                                   bool& cached, const Deadline& deadline) {
   std::lock_guard<std::mutex> lock(graphs_mutex_);
   cached = graphs_.graphs && graphs_.map_version == map.version && graphs_.footprints == footprints;
   if (!cached) {
     graphs_.graphs.reset();  // free the old graphs before building new ones
-    graphs_.graphs = std::make_shared<const FleetGraphs>(map.grid, footprints, ActionModel{},
-                                                         config_.threads, config_.resourceLimits(),
-                                                         deadline);  // may throw ResourceLimitError
+    graphs_.graphs = std::make_shared<const FleetGraphs>(map.grid, footprints, ActionModel{}, config_.threads,
+                                                         config_.resourceLimits(), deadline);  // may throw ResourceLimitError
     graphs_.map_version = map.version;
     graphs_.footprints = footprints;
   }
@@ -269,22 +250,18 @@ bool FleetPlanningService::checkFields(const Request& request, PlanCall& call, d
   std::map<std::string, int> task_of;
   for (int i = 0; i < n; ++i) {
     const std::string& id = request.tasks[i].robot_id;
-    if (id.empty())
-      return reject(Response::INVALID_REQUEST,
-                    "tasks[" + std::to_string(i) + "]: robot_id is empty");
+    if (id.empty()) return reject(Response::INVALID_REQUEST, "tasks[" + std::to_string(i) + "]: robot_id is empty");
     const auto [it, fresh] = task_of.emplace(id, i);
     if (!fresh) {
-      return reject(Response::INVALID_REQUEST, quoted(id) + " has two tasks (tasks[" +
-                                                   std::to_string(it->second) + "] and tasks[" +
-                                                   std::to_string(i) + "])");
+      return reject(Response::INVALID_REQUEST, quoted(id) + " has two tasks (tasks[" + std::to_string(it->second) +
+                                                   "] and tasks[" + std::to_string(i) + "])");
     }
   }
   time_limit = timeLimit(request);
-  if (request.time_limit != -1.0 &&
-      (!(request.time_limit > 0) || !std::isfinite(request.time_limit))) {
+  if (request.time_limit != -1.0 && (!(request.time_limit > 0) || !std::isfinite(request.time_limit))) {
     return reject(Response::INVALID_REQUEST,
-                  "time_limit must be > 0 seconds, or -1 for the planner's default (" +
-                      number(config_.time_limit) + " s); got " + number(request.time_limit));
+                  "time_limit must be > 0 seconds, or -1 for the planner's default (" + number(config_.time_limit) +
+                      " s); got " + number(request.time_limit));
   }
   if (time_limit > config_.max_time_limit) {
     return reject(Response::INVALID_REQUEST, "time_limit " + number(request.time_limit) +
@@ -292,15 +269,13 @@ bool FleetPlanningService::checkFields(const Request& request, PlanCall& call, d
                                                  number(config_.max_time_limit) + " s)");
   }
   if (request.decomposition > Request::DECOMPOSITION_RAW) {
-    return reject(
-        Response::INVALID_REQUEST,
-        "decomposition must be DECOMPOSITION_DEFAULT (0), _LAYERED (1) or _RAW (2); got " +
-            std::to_string(request.decomposition));
+    return reject(Response::INVALID_REQUEST,
+                  "decomposition must be DECOMPOSITION_DEFAULT (0), _LAYERED (1) or _RAW (2); got " +
+                      std::to_string(request.decomposition));
   }
   if (request.steps > 4) {
-    return reject(
-        Response::INVALID_REQUEST,
-        "steps must be 1..4, or 0 for the planner's default; got " + std::to_string(request.steps));
+    return reject(Response::INVALID_REQUEST,
+                  "steps must be 1..4, or 0 for the planner's default; got " + std::to_string(request.steps));
   }
   const std::string wanted = request.backend.empty() ? config_.backend : request.backend;
   std::string why_not;
@@ -329,8 +304,7 @@ bool FleetPlanningService::checkFields(const Request& request, PlanCall& call, d
 }
 
 void FleetPlanningService::planChecked(const Request& request, const StartLookup& lookup,
-                                       const std::atomic<bool>* cancel, Clock::time_point received,
-                                       PlanCall& call) {
+                                       const std::atomic<bool>* cancel, Clock::time_point received, PlanCall& call) {
   const auto t0 = received;
   Response& res = call.response;
   const int n = static_cast<int>(request.tasks.size());
@@ -350,11 +324,8 @@ void FleetPlanningService::planChecked(const Request& request, const StartLookup
     registry = footprints_;
     map_refused = map_refused_;
   }
-  if (!map && !map_refused.empty())
-    return fail(call, Response::RESOURCE_LIMIT, "the map was refused: " + map_refused);
-  if (!map)
-    return fail(call, Response::NO_MAP,
-                "no map received yet (topic 'map', nav_msgs/OccupancyGrid)");
+  if (!map && !map_refused.empty()) return fail(call, Response::RESOURCE_LIMIT, "the map was refused: " + map_refused);
+  if (!map) return fail(call, Response::NO_MAP, "no map received yet (topic 'map', nav_msgs/OccupancyGrid)");
   call.map = map;
   const GridMap& grid = map->grid;
 
@@ -376,8 +347,7 @@ void FleetPlanningService::planChecked(const Request& request, const StartLookup
       std::string known;
       for (const auto& [id, f] : registry) known += (known.empty() ? "" : ", ") + id;
       robotError(RobotResultMsg::UNKNOWN_ROBOT, "not in the footprint registry (known: " +
-                                                    (known.empty() ? std::string("none") : known) +
-                                                    ")");
+                                                    (known.empty() ? std::string("none") : known) + ")");
       continue;
     }
     std::unique_ptr<FootprintCells> cells;
@@ -399,13 +369,11 @@ void FleetPlanningService::planChecked(const Request& request, const StartLookup
     if (task.start_from_tf) {
       std::string error;
       if (!lookup || !lookup(task.robot_id, start, error)) {
-        robotError(RobotResultMsg::NO_TRANSFORM,
-                   "start from TF: " + (lookup ? error : "no TF lookup available"));
+        robotError(RobotResultMsg::NO_TRANSFORM, "start from TF: " + (lookup ? error : "no TF lookup available"));
         continue;
       }
     }
-    auto place = [&](const geometry_msgs::Pose2D& pose, const char* what, std::uint8_t status,
-                     GridPose& out) {
+    auto place = [&](const geometry_msgs::Pose2D& pose, const char* what, std::uint8_t status, GridPose& out) {
       const GridPoseFit fit = toGridPose(grid, pose, config_.poseTolerance());
       if (!fit.ok()) {
         robotError(status, std::string(what) + " " + fit.error);
@@ -413,8 +381,8 @@ void FleetPlanningService::planChecked(const Request& request, const StartLookup
       }
       const std::string problem = poseProblem(grid, *cells, fit.pose);
       if (!problem.empty()) {
-        robotError(status, std::string(what) + " " + poseText(pose) + " = grid state " +
-                               toString(fit.pose) + ": " + problem);
+        robotError(status, std::string(what) + " " + poseText(pose) + " = grid state " + toString(fit.pose) + ": " +
+                               problem);
         return false;
       }
       out = fit.pose;
@@ -422,8 +390,7 @@ void FleetPlanningService::planChecked(const Request& request, const StartLookup
     };
     if (!place(start, "start", RobotResultMsg::INVALID_START, tasks[i].start)) continue;
     if (!place(task.goal, "goal", RobotResultMsg::INVALID_GOAL, tasks[i].goal)) continue;
-    tasks[i].placement = {task.robot_id, found->second, toPose2D(grid, tasks[i].start),
-                          toPose2D(grid, tasks[i].goal), -1};
+    tasks[i].placement = {task.robot_id, found->second, toPose2D(grid, tasks[i].start), toPose2D(grid, tasks[i].goal), -1};
   }
   for (int i = 0; i < n; ++i) {
     if (res.robots[i].status == RobotResultMsg::OK) call.placements.push_back(tasks[i].placement);
@@ -434,8 +401,8 @@ void FleetPlanningService::planChecked(const Request& request, const StartLookup
   Instance instance;
   std::vector<Footprint> footprints;
   for (int i = 0; i < n; ++i) {
-    instance.robots.push_back({request.tasks[i].robot_id, tasks[i].footprint, tasks[i].start,
-                               tasks[i].goal, "tasks[" + std::to_string(i) + "]"});
+    instance.robots.push_back({request.tasks[i].robot_id, tasks[i].footprint, tasks[i].start, tasks[i].goal,
+                               "tasks[" + std::to_string(i) + "]"});
     footprints.push_back(tasks[i].footprint);
   }
   const MemoryGuard memory(config_.max_memory_mb);  // the graphs count against the time limit
@@ -448,8 +415,8 @@ void FleetPlanningService::planChecked(const Request& request, const StartLookup
   for (const RobotProblem& p : report.problems) {
     auto& result = res.robots[p.robot];
     if (result.status != RobotResultMsg::OK) continue;
-    result.status = p.kind == RobotProblem::Kind::Unreachable     ? RobotResultMsg::UNREACHABLE
-                    : p.kind == RobotProblem::Kind::InvalidStart  ? RobotResultMsg::INVALID_START
+    result.status = p.kind == RobotProblem::Kind::Unreachable ? RobotResultMsg::UNREACHABLE
+                    : p.kind == RobotProblem::Kind::InvalidStart ? RobotResultMsg::INVALID_START
                     : p.kind == RobotProblem::Kind::InvalidTarget ? RobotResultMsg::INVALID_GOAL
                                                                   : RobotResultMsg::CONFLICT;
     result.message = p.reason;
@@ -464,9 +431,8 @@ void FleetPlanningService::planChecked(const Request& request, const StartLookup
     options.fallback = resolveBackendName(config_.fallback, &why_not);
     if (options.fallback.empty()) throw InvalidInput("parameter 'fallback': " + why_not);
   }
-  options.decompose = request.decomposition == Request::DECOMPOSITION_DEFAULT
-                          ? config_.decomposition
-                          : request.decomposition == Request::DECOMPOSITION_LAYERED;
+  options.decompose = request.decomposition == Request::DECOMPOSITION_DEFAULT ? config_.decomposition
+                      : request.decomposition == Request::DECOMPOSITION_LAYERED;
   options.last_step = request.steps == 0 ? config_.decomposition_steps : request.steps;
   options.threads = config_.threads;
   options.refine = config_.refine;
@@ -503,8 +469,7 @@ void FleetPlanningService::planChecked(const Request& request, const StartLookup
     if (deadline.cancelled()) message = "cancelled (the node is shutting down): " + result.reason;
     for (const std::string& merge : result.merges) message += "; " + merge;
     fail(call, responseStatus(result.status), message);
-    for (auto& r : res.robots)
-      r.status = RobotResultMsg::NOT_PLANNED, r.message = "not planned: " + message;
+    for (auto& r : res.robots) r.status = RobotResultMsg::NOT_PLANNED, r.message = "not planned: " + message;
     return;
   }
 
@@ -532,25 +497,23 @@ void FleetPlanningService::planChecked(const Request& request, const StartLookup
   res.statistics.soc = result.metrics.soc;
   res.statistics.makespan = result.metrics.makespan;
   res.status = Response::SUCCESS;
-  res.message = "planned " + std::to_string(n) + " robots with " + backend +
-                (options.decompose ? " (layered, " : " (raw, ") +
-                std::to_string(result.subproblems.size()) + " subproblems): SOC " +
-                std::to_string(result.metrics.soc) + ", makespan " +
-                std::to_string(result.metrics.makespan) + " steps";
+  res.message = "planned " + std::to_string(n) + " robots with " + backend + (options.decompose ? " (layered, " : " (raw, ") +
+                std::to_string(result.subproblems.size()) + " subproblems): SOC " + std::to_string(result.metrics.soc) +
+                ", makespan " + std::to_string(result.metrics.makespan) + " steps";
 }
 
 std::string fleetStatusName(std::uint8_t status) {
-  static const char* const kNames[] = {
-      "SUCCESS",       "TIMEOUT",         "INFEASIBLE",    "INVALID_REQUEST", "NO_MAP",
-      "UNKNOWN_ROBOT", "UNKNOWN_BACKEND", "INVALID_START", "INVALID_GOAL",    "NO_TRANSFORM",
-      "BUSY",          "INTERNAL_ERROR",  "RESOURCE_LIMIT"};
+  static const char* const kNames[] = {"SUCCESS",         "TIMEOUT",       "INFEASIBLE",    "INVALID_REQUEST",
+                                       "NO_MAP",          "UNKNOWN_ROBOT", "UNKNOWN_BACKEND", "INVALID_START",
+                                       "INVALID_GOAL",    "NO_TRANSFORM",  "BUSY",          "INTERNAL_ERROR",
+                                       "RESOURCE_LIMIT"};
   return status < std::size(kNames) ? kNames[status] : "STATUS_" + std::to_string(status);
 }
 
 std::string robotStatusName(std::uint8_t status) {
-  static const char* const kNames[] = {"OK",           "UNKNOWN_ROBOT", "INVALID_START",
-                                       "INVALID_GOAL", "NO_TRANSFORM",  "UNREACHABLE",
-                                       "CONFLICT",     "NOT_PLANNED",   "INVALID_FOOTPRINT"};
+  static const char* const kNames[] = {"OK",           "UNKNOWN_ROBOT", "INVALID_START", "INVALID_GOAL",
+                                       "NO_TRANSFORM", "UNREACHABLE",   "CONFLICT",      "NOT_PLANNED",
+                                       "INVALID_FOOTPRINT"};
   return status < std::size(kNames) ? kNames[status] : "STATUS_" + std::to_string(status);
 }
 

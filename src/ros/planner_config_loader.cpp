@@ -17,12 +17,9 @@ class Reader {
   void read(const char* name, double& out) {
     XmlRpc::XmlRpcValue v;
     if (!get(name, v)) return;
-    if (v.getType() == XmlRpc::XmlRpcValue::TypeDouble)
-      out = static_cast<double>(v);
-    else if (v.getType() == XmlRpc::XmlRpcValue::TypeInt)
-      out = static_cast<int>(v);
-    else
-      wrongType(name, "a number", v);
+    if (v.getType() == XmlRpc::XmlRpcValue::TypeDouble) out = static_cast<double>(v);
+    else if (v.getType() == XmlRpc::XmlRpcValue::TypeInt) out = static_cast<int>(v);
+    else wrongType(name, "a number", v);
   }
   void read(const char* name, int& out) {
     XmlRpc::XmlRpcValue v;
@@ -48,15 +45,12 @@ class Reader {
   static std::string describe(XmlRpc::XmlRpcValue& v) {
     std::string xml = v.toXml();  // "<value>abc</value>", "<value><double>1.5</double></value>"
     for (const char* tag : {"<value>", "</value>"}) {
-      for (auto at = xml.find(tag); at != std::string::npos; at = xml.find(tag))
-        xml.erase(at, std::string(tag).size());
+      for (auto at = xml.find(tag); at != std::string::npos; at = xml.find(tag)) xml.erase(at, std::string(tag).size());
     }
     return xml;
   }
-  [[noreturn]] void wrongType(const char* name, const char* expected,
-                              XmlRpc::XmlRpcValue& v) const {
-    throw InvalidInput("parameter " + nh_.resolveName(name) + " must be " + expected + " (got " +
-                       describe(v) + ")");
+  [[noreturn]] void wrongType(const char* name, const char* expected, XmlRpc::XmlRpcValue& v) const {
+    throw InvalidInput("parameter " + nh_.resolveName(name) + " must be " + expected + " (got " + describe(v) + ")");
   }
   const ros::NodeHandle& nh_;
 };
@@ -65,32 +59,14 @@ class Reader {
 
 namespace {
 
-const char* const kParameters[] = {"backend",
-                                   "time_limit",
-                                   "max_time_limit",
-                                   "decomposition",
-                                   "decomposition_steps",
-                                   "threads",
-                                   "busy_policy",
-                                   "max_map_cells",
-                                   "max_robots",
-                                   "max_memory_mb",
-                                   "occupied_threshold",
-                                   "unknown_policy",
-                                   "position_tolerance",
-                                   "heading_tolerance",
-                                   "seconds_per_step",
-                                   "map_frame",
-                                   "base_frame",
-                                   "tf_timeout",
-                                   "playback",
-                                   "planned_frame",
-                                   "playback_rate",
-                                   "playback_loop",
-                                   "sweep_tolerance",
-                                   "refine",
-                                   "compress",
-                                   "fallback"};
+const char* const kParameters[] = {
+    "backend",          "time_limit",         "max_time_limit",    "decomposition",
+    "decomposition_steps", "threads",         "busy_policy",       "max_map_cells",
+    "max_robots",       "max_memory_mb",      "occupied_threshold", "unknown_policy",
+    "position_tolerance", "heading_tolerance", "seconds_per_step", "map_frame",
+    "base_frame",       "tf_timeout",         "playback",          "planned_frame",
+    "playback_rate",    "playback_loop",      "sweep_tolerance",  "refine",
+    "compress",         "fallback"};
 
 }  // namespace
 

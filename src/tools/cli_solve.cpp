@@ -50,22 +50,15 @@ void addSolveCommand(CLI::App& app) {
       ->check(CLI::NonNegativeNumber);
   cmd->add_option("--seed", o->seed, "random seed (same seed, same plan)");
   cmd->add_option("--out", o->out, "write the plan (YAML) here on success");
-  cmd->add_option("--threads", o->threads,
-                  "threads for graphs, relation graphs and subproblems (default: cores)")
-      ->check(CLI::PositiveNumber);
-  cmd->add_flag("--no-compress", o->no_compress,
-                "keep the merged plan's waits (no plan compression)");
-  cmd->add_flag("--no-refine", o->no_refine,
-                "keep the merged paths (no replanning of single robots)");
-  cmd->add_flag(
-      "--one-chain", o->one_chain,
-      "serial backends: plan every level around all earlier paths (no independent clusters)");
-  cmd->add_option(
-      "--fallback", o->fallback,
-      "layered: backend tried on a subproblem that --backend fails, in the second half of its time "
-      "share, before the safeguard merges it (e.g. la_lns; default none)");
-  cmd->add_flag("--details", o->details,
-                "add the solved subproblems (robot ids, status, time, delay) to the JSON");
+  cmd->add_option("--threads", o->threads, "threads for graphs, relation graphs and subproblems (default: cores)")->check(CLI::PositiveNumber);
+  cmd->add_flag("--no-compress", o->no_compress, "keep the merged plan's waits (no plan compression)");
+  cmd->add_flag("--no-refine", o->no_refine, "keep the merged paths (no replanning of single robots)");
+  cmd->add_flag("--one-chain", o->one_chain,
+                "serial backends: plan every level around all earlier paths (no independent clusters)");
+  cmd->add_option("--fallback", o->fallback,
+                  "layered: backend tried on a subproblem that --backend fails, in the second half of its time "
+                  "share, before the safeguard merges it (e.g. la_lns; default none)");
+  cmd->add_flag("--details", o->details, "add the solved subproblems (robot ids, status, time, delay) to the JSON");
   cmd->callback([o] {
     const auto t0 = std::chrono::steady_clock::now();
     const MemoryGuard memory(o->problem.limits.max_memory_mb);
@@ -79,8 +72,7 @@ void addSolveCommand(CLI::App& app) {
     std::unique_ptr<FleetGraphs> graphs;
     LayeredResult result;
     try {
-      graphs = std::make_unique<FleetGraphs>(p.map, footprints, ActionModel{}, o->threads,
-                                             o->problem.limits, deadline);
+      graphs = std::make_unique<FleetGraphs>(p.map, footprints, ActionModel{}, o->threads, o->problem.limits, deadline);
     } catch (const DeadlineExpired& e) {
       result.status = deadline.outOfMemory() ? SolveStatus::ResourceLimit
                       : deadline.cancelled() ? SolveStatus::Cancelled
@@ -103,8 +95,7 @@ void addSolveCommand(CLI::App& app) {
 
     const int n = static_cast<int>(p.instance.robots.size());
     int largest = 0;
-    for (const auto& s : result.subproblems)
-      largest = std::max(largest, static_cast<int>(s.robots.size()));
+    for (const auto& s : result.subproblems) largest = std::max(largest, static_cast<int>(s.robots.size()));
     nlohmann::json j{{"status", statusName(result.status)},
                      {"success", result.success()},
                      {"backend", o->backend},
@@ -136,15 +127,9 @@ void addSolveCommand(CLI::App& app) {
       for (const auto& s : result.subproblems) {
         nlohmann::json ids = nlohmann::json::array();
         for (int r : s.robots) ids.push_back(p.instance.robots[r].id);
-        list.push_back({{"robots", ids},
-                        {"cluster", s.cluster},
-                        {"level", s.level},
-                        {"status", statusName(s.status)},
-                        {"time_s", s.time_s},
-                        {"delay", s.delay},
-                        {"high_level_nodes", s.stats.high_level_nodes},
-                        {"low_level_expansions", s.stats.low_level_expansions},
-                        {"by_fallback", s.by_fallback}});
+        list.push_back({{"robots", ids}, {"cluster", s.cluster}, {"level", s.level}, {"status", statusName(s.status)},
+                        {"time_s", s.time_s}, {"delay", s.delay}, {"high_level_nodes", s.stats.high_level_nodes},
+                        {"low_level_expansions", s.stats.low_level_expansions}, {"by_fallback", s.by_fallback}});
       }
       j["subproblem_details"] = list;
     }

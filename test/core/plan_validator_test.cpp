@@ -24,8 +24,8 @@ Robot robot(const std::string& id, Footprint f, GridPose start, GridPose target)
 }
 using test::dot;
 
-Violation check(const GridMap& map, const std::vector<Robot>& robots,
-                const std::vector<Path>& paths, ActionModel model = {}) {
+Violation check(const GridMap& map, const std::vector<Robot>& robots, const std::vector<Path>& paths,
+                ActionModel model = {}) {
   Instance instance;
   instance.robots = robots;
   Plan plan;
@@ -94,18 +94,16 @@ TEST(PlanValidator, StateInObstacle) {
 TEST(PlanValidator, SweepInObstacle) {
   // Both end poses of the turn are free; the front corner passes over (3, 2).
   const GridMap map = mapFromRows({".....", ".....", "...@.", ".....", "....."});
-  const auto v =
-      check(map, {robot("b", Footprint::block(-0.5, -0.5, 1.5, 0.5), {1, 2, 0}, {1, 2, 2})},
-            {{{1, 2, 0}, {1, 2, 2}}});
+  const auto v = check(map, {robot("b", Footprint::block(-0.5, -0.5, 1.5, 0.5), {1, 2, 0}, {1, 2, 2})},
+                       {{{1, 2, 0}, {1, 2, 2}}});
   EXPECT_EQ(v.kind, Kind::SweepInObstacle);
   EXPECT_EQ(v.time, 0);
 }
 
 TEST(PlanValidator, VertexConflict) {
   const GridMap map = freeMap(5, 1);
-  const auto v =
-      check(map, {dot("a", {0, 0, 0}, {2, 0, 0}), dot("b", {4, 0, 1}, {3, 0, 1})},
-            {{{0, 0, 0}, {1, 0, 0}, {2, 0, 0}}, {{4, 0, 1}, {3, 0, 1}, {2, 0, 1}, {3, 0, 1}}});
+  const auto v = check(map, {dot("a", {0, 0, 0}, {2, 0, 0}), dot("b", {4, 0, 1}, {3, 0, 1})},
+                       {{{0, 0, 0}, {1, 0, 0}, {2, 0, 0}}, {{4, 0, 1}, {3, 0, 1}, {2, 0, 1}, {3, 0, 1}}});
   EXPECT_EQ(v.kind, Kind::VertexConflict);
   EXPECT_EQ(v.time, 2);
   EXPECT_EQ(v.robot, 0);
@@ -123,9 +121,8 @@ TEST(PlanValidator, SwapIsATransferConflict) {
 TEST(PlanValidator, TurningIntoAWaitingRobotIsATransferConflict) {
   // The block's turn sweeps (3, 2), where a waits; no footprints overlap before or after.
   const GridMap map = freeMap(5, 5);
-  const auto v = check(map,
-                       {robot("b", Footprint::block(-0.5, -0.5, 1.5, 0.5), {1, 2, 0}, {1, 2, 2}),
-                        dot("a", {3, 2, 0}, {3, 2, 0})},
+  const auto v = check(map, {robot("b", Footprint::block(-0.5, -0.5, 1.5, 0.5), {1, 2, 0}, {1, 2, 2}),
+                             dot("a", {3, 2, 0}, {3, 2, 0})},
                        {{{1, 2, 0}, {1, 2, 2}}, {{3, 2, 0}}});
   EXPECT_EQ(v.kind, Kind::TransferConflict);
   EXPECT_EQ(v.robot, 0);
@@ -135,10 +132,9 @@ TEST(PlanValidator, TurningIntoAWaitingRobotIsATransferConflict) {
 TEST(PlanValidator, ArrivedRobotsStayAtTheirTargets) {
   // a arrives at (2, 0) at t = 2 and stays; b drives through (2, 0) at t = 4.
   const GridMap map = freeMap(5, 2);
-  const auto v = check(
-      map, {dot("a", {1, 1, 3}, {2, 0, 0}), dot("b", {0, 0, 0}, {4, 0, 0})},
-      {{{1, 1, 3}, {1, 0, 3}, {1, 0, 0}, {2, 0, 0}},
-       {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}, {0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {3, 0, 0}, {4, 0, 0}}});
+  const auto v = check(map, {dot("a", {1, 1, 3}, {2, 0, 0}), dot("b", {0, 0, 0}, {4, 0, 0})},
+                       {{{1, 1, 3}, {1, 0, 3}, {1, 0, 0}, {2, 0, 0}},
+                        {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}, {0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {3, 0, 0}, {4, 0, 0}}});
   EXPECT_EQ(v.kind, Kind::VertexConflict);
   EXPECT_EQ(v.time, 5);
 }
@@ -146,12 +142,8 @@ TEST(PlanValidator, ArrivedRobotsStayAtTheirTargets) {
 TEST(PlanValidator, LargeFootprintsConflictAcrossCells) {
   // Two circles of radius 1 (3 x 3 cells) three cells apart are clear; two apart they overlap.
   const GridMap map = freeMap(8, 3);
-  auto big = [](const std::string& id, GridPose s, GridPose t) {
-    return robot(id, Footprint::circle(1.0), s, t);
-  };
-  EXPECT_EQ(check(map, {big("a", {1, 1, 0}, {1, 1, 0}), big("b", {4, 1, 1}, {4, 1, 1})},
-                  {{{1, 1, 0}}, {{4, 1, 1}}})
-                .kind,
+  auto big = [](const std::string& id, GridPose s, GridPose t) { return robot(id, Footprint::circle(1.0), s, t); };
+  EXPECT_EQ(check(map, {big("a", {1, 1, 0}, {1, 1, 0}), big("b", {4, 1, 1}, {4, 1, 1})}, {{{1, 1, 0}}, {{4, 1, 1}}}).kind,
             Kind::None);
   EXPECT_EQ(check(map, {big("a", {1, 1, 0}, {1, 1, 0}), big("b", {4, 1, 1}, {3, 1, 1})},
                   {{{1, 1, 0}}, {{4, 1, 1}, {3, 1, 1}}})

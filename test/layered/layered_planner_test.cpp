@@ -19,8 +19,8 @@ namespace {
 using test::dot;
 using test::footprintsOf;
 
-LayeredResult plan(const GridMap& map, const Instance& in, const std::string& backend,
-                   bool layered = true, double seconds = 5.0) {
+LayeredResult plan(const GridMap& map, const Instance& in, const std::string& backend, bool layered = true,
+                   double seconds = 5.0) {
   const FleetGraphs graphs(map, footprintsOf(in));
   LayeredOptions o;
   o.backend = backend;
@@ -93,8 +93,7 @@ TEST_P(LayeredBackends, RandomInstancesGiveValidDeterministicPlans) {
   int solved = 0, tried = 0, compared = 0, repartitioned = 0;
   for (std::uint64_t seed = 1; seed <= 500; ++seed) {
     const GridMap map = randomMap(seed);
-    const std::optional<Instance> fleet =
-        test::randomFleet(map, 2 + static_cast<int>(seed % 6), seed);
+    const std::optional<Instance> fleet = test::randomFleet(map, 2 + static_cast<int>(seed % 6), seed);
     if (!fleet) continue;
     const Instance& in = *fleet;
     ++tried;
@@ -120,9 +119,8 @@ TEST_P(LayeredBackends, RandomInstancesGiveValidDeterministicPlans) {
   EXPECT_GE(tried, 450);
   EXPECT_GE(compared, 20);
   EXPECT_GE(solved, tried / 2) << GetParam() << " solved " << solved << " of " << tried;
-  std::cout << "[ random    ] " << GetParam() << ": " << solved << " of " << tried
-            << " solved within 0.25 s, " << compared << " rerun identical, " << repartitioned
-            << " rerun with other subproblems\n";
+  std::cout << "[ random    ] " << GetParam() << ": " << solved << " of " << tried << " solved within 0.25 s, "
+            << compared << " rerun identical, " << repartitioned << " rerun with other subproblems\n";
 }
 
 // Independent subproblems (LA-LaCAM) or clusters (LA-CBS) run on a thread pool: one thread or
@@ -132,8 +130,7 @@ TEST_P(LayeredBackends, ThreadsDoNotChangeThePlan) {
   int compared = 0;
   for (std::uint64_t seed = 1; seed <= 160 && compared < 15; ++seed) {
     const GridMap map = randomMap(seed + 1000);
-    const std::optional<Instance> fleet =
-        test::randomFleet(map, 4 + static_cast<int>(seed % 5), seed);
+    const std::optional<Instance> fleet = test::randomFleet(map, 4 + static_cast<int>(seed % 5), seed);
     if (!fleet) continue;
     const Instance& in = *fleet;
     const FleetGraphs graphs(map, footprintsOf(in));
@@ -144,9 +141,7 @@ TEST_P(LayeredBackends, ThreadsDoNotChangeThePlan) {
     const LayeredResult one = planLayered(map, in, graphs, o, Deadline::in(1.0));
     o.threads = 3;
     const LayeredResult three = planLayered(map, in, graphs, o, Deadline::in(1.0));
-    if (!one.success() || !three.success() || one.refinement.deadline_hit ||
-        three.refinement.deadline_hit)
-      continue;
+    if (!one.success() || !three.success() || one.refinement.deadline_hit || three.refinement.deadline_hit) continue;
     if (!one.merges.empty() || !three.merges.empty()) continue;
     ++compared;
     EXPECT_EQ(one.plan.paths, three.plan.paths) << "seed " << seed;
@@ -185,15 +180,13 @@ class Stubborn : public Solver {
     return makeSolver("la_lacam")->solve(p);
   }
 };
-const bool kStubborn =
-    registerSolver("stubborn_test_backend", [] { return std::make_unique<Stubborn>(); });
+const bool kStubborn = registerSolver("stubborn_test_backend", [] { return std::make_unique<Stubborn>(); });
 
 TEST(LayeredPlanner, FailedSubproblemIsMergedWithItsNeighbour) {
   ASSERT_TRUE(kStubborn);
   const GridMap map = test::freeMap(12, 6);
   Instance in;
-  in.robots = {dot("a", {0, 0, 0}, {11, 0, 0}), dot("stubborn", {0, 3, 0}, {11, 3, 0}),
-               dot("c", {0, 5, 0}, {11, 5, 0})};
+  in.robots = {dot("a", {0, 0, 0}, {11, 0, 0}), dot("stubborn", {0, 3, 0}, {11, 3, 0}), dot("c", {0, 5, 0}, {11, 5, 0})};
   const LayeredResult r = plan(map, in, "stubborn_test_backend");
   ASSERT_TRUE(r.success()) << r.reason;
   ASSERT_EQ(r.merges.size(), 1u);

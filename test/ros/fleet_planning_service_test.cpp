@@ -1,8 +1,6 @@
 // The PlanFleet service logic without a master: every plan it returns passes the independent
 // validator, and every kind of bad request gets its own status and a message that names the
 // robot and the problem.
-#include "fleet_planner/ros/fleet_planning_service.h"
-
 #include <gtest/gtest.h>
 
 #include <chrono>
@@ -14,6 +12,7 @@
 #include "fleet_planner/core/errors.h"
 #include "fleet_planner/core/plan_validator.h"
 #include "fleet_planner/ros/conversions.h"
+#include "fleet_planner/ros/fleet_planning_service.h"
 #include "ros_test_util.h"
 
 namespace fleet_planner::test {
@@ -37,8 +36,7 @@ class PlanningServiceTest : public ::testing::Test {
   void expectValidPlan(const Request& request, const Response& response) {
     ASSERT_EQ(response.status, Response::SUCCESS) << response.message;
     ASSERT_EQ(response.timelines.size(), request.tasks.size());
-    const GridMap map = convert(occupancyGrid(24, 12, kRes, kOx, kOy, {{8, 8}, {8, 9}, {15, 1}}),
-                                OccupancyPolicy{});
+    const GridMap map = convert(occupancyGrid(24, 12, kRes, kOx, kOy, {{8, 8}, {8, 9}, {15, 1}}), OccupancyPolicy{});
     const Instance instance = instanceOf(request, registry(), response, kRes);
     const auto validation = validatePlan(map, instance, planOf(response));
     EXPECT_TRUE(validation.valid()) << validation.violation.message;
@@ -64,14 +62,12 @@ TEST_F(PlanningServiceTest, PlansAValidFleetPlanWithEachBackendAndMode) {
   // Raw LA-CBS is left out to keep this test quick: it needs seconds on these three robots (one
   // must wait about ten steps for another; la_cbs_scenarios_test pins that case), layered
   // LA-CBS milliseconds.
-  const std::vector<std::pair<const char*, std::uint8_t>> cases = {
-      {"la_cbs", Request::DECOMPOSITION_LAYERED},
-      {"la_lacam", Request::DECOMPOSITION_LAYERED},
-      {"la_lacam", Request::DECOMPOSITION_RAW}};
+  const std::vector<std::pair<const char*, std::uint8_t>> cases = {{"la_cbs", Request::DECOMPOSITION_LAYERED},
+                                                                   {"la_lacam", Request::DECOMPOSITION_LAYERED},
+                                                                   {"la_lacam", Request::DECOMPOSITION_RAW}};
   for (const auto& [backend, mode] : cases) {
     {
-      SCOPED_TRACE(std::string(backend) +
-                   (mode == Request::DECOMPOSITION_RAW ? " raw" : " layered"));
+      SCOPED_TRACE(std::string(backend) + (mode == Request::DECOMPOSITION_RAW ? " raw" : " layered"));
       Request request = swapRequest();
       request.backend = backend;
       request.decomposition = mode;
@@ -308,8 +304,7 @@ TEST(PlanningServiceMap, RejectsABrokenGridAndKeepsThePreviousOne) {
 // --- Hostile requests: each gets its own status and a message naming the robot or the field. ---
 
 TEST_F(PlanningServiceTest, EveryNonFinitePoseValueIsNamedPerRobotAndField) {
-  const double bad_values[] = {std::numeric_limits<double>::quiet_NaN(),
-                               std::numeric_limits<double>::infinity(),
+  const double bad_values[] = {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity(),
                                -std::numeric_limits<double>::infinity()};
   for (const bool goal : {false, true}) {
     for (const char* field : {"x", "y", "theta"}) {
@@ -323,8 +318,7 @@ TEST_F(PlanningServiceTest, EveryNonFinitePoseValueIsNamedPerRobotAndField) {
         EXPECT_EQ(r.status, goal ? Response::INVALID_GOAL : Response::INVALID_START) << r.message;
         EXPECT_NE(r.message.find("robot 'amr_2': " + what), std::string::npos) << r.message;
         ASSERT_EQ(r.robots.size(), 3u);
-        EXPECT_EQ(r.robots[1].status,
-                  goal ? RobotResultMsg::INVALID_GOAL : RobotResultMsg::INVALID_START);
+        EXPECT_EQ(r.robots[1].status, goal ? RobotResultMsg::INVALID_GOAL : RobotResultMsg::INVALID_START);
         EXPECT_EQ(r.robots[0].status, RobotResultMsg::NOT_PLANNED);
         // The same answer without the map: checkRequest() needs neither map nor registry.
         const auto early = service.checkRequest(request);
@@ -341,9 +335,7 @@ TEST_F(PlanningServiceTest, AYawTooLargeToBeAnAngleIsRejected) {
   request.tasks[0].goal.theta = 1e20;  // matches some grid heading by chance: not a usable angle
   const Response r = plan(request).response;
   EXPECT_EQ(r.status, Response::INVALID_GOAL);
-  EXPECT_NE(r.message.find("robot 'amr_1': goal theta 1e+20 rad is not an angle"),
-            std::string::npos)
-      << r.message;
+  EXPECT_NE(r.message.find("robot 'amr_1': goal theta 1e+20 rad is not an angle"), std::string::npos) << r.message;
   request = swapRequest();
   request.tasks[0].start.theta = 4 * kPi;  // a wrapped-around yaw is fine
   EXPECT_EQ(plan(request).response.status, Response::SUCCESS);
@@ -372,8 +364,7 @@ TEST_F(PlanningServiceTest, TimeLimitAboveMaxTimeLimitIsAnInvalidRequest) {
     EXPECT_EQ(r.status, Response::INVALID_REQUEST) << r.message;
     EXPECT_NE(r.message.find("max_time_limit (60 s)"), std::string::npos) << r.message;
   }
-  for (const double limit :
-       {std::numeric_limits<double>::infinity(), std::numeric_limits<double>::quiet_NaN(), -2.0}) {
+  for (const double limit : {std::numeric_limits<double>::infinity(), std::numeric_limits<double>::quiet_NaN(), -2.0}) {
     Request request = swapRequest();
     request.time_limit = limit;
     const Response r = plan(request).response;
@@ -397,8 +388,7 @@ TEST(PlanningServiceChecks, BadRequestsAreAnsweredWithoutMapOrRegistry) {
   const std::vector<std::pair<std::function<void(Request&)>, std::string>> cases = {
       {[](Request& r) { r.tasks.clear(); }, "tasks is empty"},
       {[](Request& r) { r.tasks[1].robot_id = ""; }, "tasks[1]: robot_id is empty"},
-      {[](Request& r) { r.tasks[2].robot_id = "amr_1"; },
-       "robot 'amr_1' has two tasks (tasks[0] and tasks[2])"},
+      {[](Request& r) { r.tasks[2].robot_id = "amr_1"; }, "robot 'amr_1' has two tasks (tasks[0] and tasks[2])"},
       {[](Request& r) { r.time_limit = 1e12; }, "max_time_limit"},
       {[](Request& r) { r.backend = "teleport"; }, "no backend named 'teleport'"},
       {[](Request& r) { r.tasks[0].goal.x = NAN; }, "robot 'amr_1': goal x is nan"},
@@ -432,10 +422,8 @@ TEST_F(PlanningServiceTest, AFootprintLargerThanTheMapIsRejectedAtOnce) {
   EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), 2.0);
   EXPECT_EQ(r.status, Response::INVALID_REQUEST) << r.message;
   EXPECT_EQ(r.robots[1].status, RobotResultMsg::INVALID_FOOTPRINT) << r.robots[1].message;
-  EXPECT_NE(r.robots[1].message.find("robot 'amr_2': footprint"), std::string::npos)
-      << r.robots[1].message;
-  EXPECT_NE(r.robots[1].message.find("larger than the map (6 m x 3 m)"), std::string::npos)
-      << r.robots[1].message;
+  EXPECT_NE(r.robots[1].message.find("robot 'amr_2': footprint"), std::string::npos) << r.robots[1].message;
+  EXPECT_NE(r.robots[1].message.find("larger than the map (6 m x 3 m)"), std::string::npos) << r.robots[1].message;
   EXPECT_EQ(r.robots[2].status, RobotResultMsg::INVALID_FOOTPRINT) << r.robots[2].message;
   // A footprint that only fits turned a quarter is not rejected by size: a 5.5 m x 0.4 m block
   // on a 6 m x 3 m map fits along x.

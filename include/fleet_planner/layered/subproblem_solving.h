@@ -22,8 +22,8 @@
 /// the one before; their clusters become one) and the units it touched are solved again;
 /// every merge is reported. With a fallback backend, a subproblem that the backend fails within
 /// the first part of its time share is tried with the fallback in the rest before that. Each
-/// subproblem's seed is the planner's seed plus its first position in the decomposition, so results
-/// do not depend on the threads.
+/// subproblem's seed is the planner's seed plus its first position in the decomposition, so
+/// results do not depend on the threads.
 #include <string>
 #include <vector>
 
@@ -42,10 +42,9 @@ struct SolvedSubproblem {
   SolveStatus status = SolveStatus::Success;
   std::string reason;
   double time_s = 0.0;
-  int delay =
-      0;  ///< steps its paths were delayed by the merge (its cluster's, for serial backends)
-  int attempts = 0;               ///< times it was solved (more than one after a merge before it)
-  SolveStats stats;               ///< the backend's statistics for its last attempt
+  int delay = 0;        ///< steps its paths were delayed by the merge (its cluster's, for serial backends)
+  int attempts = 0;     ///< times it was solved (more than one after a merge before it)
+  SolveStats stats;     ///< the backend's statistics for its last attempt
   std::uint64_t seed_offset = 0;  ///< its first position in the decomposition
   /// Serial backends: planning around its cluster's earlier paths ran past its budget, so it
   /// was planned with their targets blocked and delayed until it fit among them.
@@ -58,9 +57,9 @@ struct SolvedSubproblem {
 struct SubproblemSolving {
   SolveStatus status = SolveStatus::Success;
   std::string reason;
-  std::vector<Path> paths;              ///< on success: one per robot of the instance
-  std::vector<SolvedSubproblem> order;  ///< as solved, in order
-  std::vector<std::string> merges;      ///< one line per safeguard merge
+  std::vector<Path> paths;                 ///< on success: one per robot of the instance
+  std::vector<SolvedSubproblem> order;     ///< as solved, in order
+  std::vector<std::string> merges;         ///< one line per safeguard merge
 };
 
 struct SubproblemSolvingOptions {
@@ -78,8 +77,7 @@ struct SubproblemSolvingOptions {
 /// Solves `order` (robots, cluster and level set; cluster-major order) and merges the plans.
 /// Throws InvalidInput for an unknown backend.
 SubproblemSolving solveSubproblems(const Instance& instance, const FleetGraphs& graphs,
-                                   std::vector<SolvedSubproblem> order,
-                                   const SubproblemSolvingOptions& options,
+                                   std::vector<SolvedSubproblem> order, const SubproblemSolvingOptions& options,
                                    const Deadline& deadline);
 
 }  // namespace fleet_planner

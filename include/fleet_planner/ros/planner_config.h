@@ -2,10 +2,10 @@
 /// The planner node's one typed configuration: defaults here, loaded from the parameter server in
 /// one place (loadPlannerConfig), checked by one function (checkPlannerConfig).
 /// config/planner.yaml documents every parameter.
-#include <ros/node_handle.h>
-
 #include <string>
 #include <vector>
+
+#include <ros/node_handle.h>
 
 #include "fleet_planner/core/resource_limits.h"
 #include "fleet_planner/ros/conversions.h"
@@ -19,14 +19,14 @@ struct PlannerConfig {
   /// Largest time_limit a request may ask for (a larger one, or inf, is INVALID_REQUEST): no
   /// call can hold the planner for longer. time_limit must not exceed it.
   double max_time_limit = 60.0;
-  bool decomposition = true;    ///< default: Layered LA-MAPF (false: raw)
-  int decomposition_steps = 4;  ///< default last decomposition step, 1..4
-  int threads = 2;              ///< threads for graphs and for solving subproblems
+  bool decomposition = true;         ///< default: Layered LA-MAPF (false: raw)
+  int decomposition_steps = 4;       ///< default last decomposition step, 1..4
+  int threads = 2;                   ///< threads for graphs and for solving subproblems
   /// Backend tried on a subproblem that the backend fails, before the safeguard merges it
   /// (LayeredOptions::fallback); "" for none.
   std::string fallback = "la_lns";
-  bool refine = true;                  ///< replan delayed robots after merging (plan_refinement.h)
-  bool compress = true;                ///< drop the waits no conflict needs (plan_compression.h)
+  bool refine = true;                ///< replan delayed robots after merging (plan_refinement.h)
+  bool compress = true;              ///< drop the waits no conflict needs (plan_compression.h)
   std::string busy_policy = "reject";  ///< a call while another plans: "reject" (BUSY) or "queue"
 
   // Resource limits (core/resource_limits.h): beyond them a call answers RESOURCE_LIMIT.
@@ -35,16 +35,16 @@ struct PlannerConfig {
   double max_memory_mb = 4096;     ///< the node's resident memory while planning, MB
 
   // Map and poses.
-  int occupied_threshold = 65;              ///< occupancy values >= this are obstacles (1..100)
+  int occupied_threshold = 65;   ///< occupancy values >= this are obstacles (1..100)
   std::string unknown_policy = "obstacle";  ///< unknown cells (-1): "obstacle" or "free"
-  double position_tolerance = 0.1;          ///< metres a pose may be from its cell centre
-  double heading_tolerance = 0.2;           ///< radians a yaw may be from a grid heading
+  double position_tolerance = 0.1;  ///< metres a pose may be from its cell centre
+  double heading_tolerance = 0.2;   ///< radians a yaw may be from a grid heading
   /// Cells a rotation may clip beyond its end poses, 0..0.25 (Footprint::sweep_tolerance);
   /// 0 is the exact sweep.
   double sweep_tolerance = 0.0;
 
   // Time and frames.
-  double seconds_per_step = 0.5;  ///< duration of one plan step (a move or a quarter turn)
+  double seconds_per_step = 0.5;      ///< duration of one plan step (a move or a quarter turn)
   std::string map_frame = "map";
   std::string base_frame = "base_link";  ///< robot frames are <robot_id>/<base_frame>
   double tf_timeout = 0.5;               ///< seconds to wait for a robot's transform
