@@ -7,8 +7,9 @@
 /// subproblem around the target footprints of earlier ones; both block the start footprints of
 /// later subproblems, and plans are delayed at their starts until they fit (Algorithm 5).
 /// Independent work runs on `threads` threads with the same result. If a subproblem fails, or
-/// its share of the time runs out, while time remains, it is merged with a neighbour and solved
-/// again (the merges are reported). The merged plan is then refined (robots replanned around
+/// its share of the time runs out, while time remains, it is solved again with the robots
+/// standing near its robots' ways free to step aside, then merged with a neighbour and solved
+/// again (both are reported). The merged plan is then refined (robots replanned around
 /// the others) and compressed (waits that no conflict needs are dropped), and always passes the
 /// validator.
 #include <string>
@@ -51,6 +52,7 @@ struct LayeredResult {
   Decomposition decomposition;               ///< as computed (before any merge)
   std::vector<SolvedSubproblem> subproblems;  ///< as solved, in order
   std::vector<std::string> merges;            ///< one line per safeguard merge
+  std::vector<std::string> step_asides;       ///< one line per subproblem solved again with robots stepping aside
   RefinementStats refinement;                 ///< of the merged plan
   CompressionStats compression;               ///< of the refined plan
   double decompose_s = 0.0;

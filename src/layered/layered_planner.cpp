@@ -81,6 +81,7 @@ LayeredResult planLayered(const GridMap& map, const Instance& instance, const Fl
   result.solve_s = since(t);
   result.subproblems = std::move(solved.order);
   result.merges = std::move(solved.merges);
+  result.step_asides = std::move(solved.step_asides);
   if (solved.status != SolveStatus::Success) {
     result.status = solved.status;
     result.reason = std::move(solved.reason);

@@ -69,13 +69,17 @@ int delayToFit(const FleetGraphs& graphs, const std::vector<Path>& merged, const
   std::set<int> forbidden;
   int above = -1;  // every delay <= above is forbidden
   for (std::size_t k = 0; k < robots.size(); ++k) {
+    // A robot with a path so far continues it: the new part starts once it has ended.
+    if (done[robots[k]]) above = std::max(above, static_cast<int>(merged[robots[k]].size()) - 2);
+  }
+  for (std::size_t k = 0; k < robots.size(); ++k) {
     const FootprintCells& A = graphs.cells(robots[k]);
     const Path& a = fresh[k];
     const Box box_a = boxOf(A, a);
     const StepIndex steps_a(a, model, bucket);
     const int la = static_cast<int>(a.size()) - 1;  // a's last step; then parked
     for (int m = 0; m < static_cast<int>(merged.size()); ++m) {
-      if (!done[m] || !box_a.meets(boxOf(graphs.cells(m), merged[m]))) continue;
+      if (!done[m] || m == robots[k] || !box_a.meets(boxOf(graphs.cells(m), merged[m]))) continue;
       if (!index[m]) index[m] = std::make_unique<StepIndex>(merged[m], model, bucket);
       const StepIndex& b = *index[m];
       const FootprintCells& B = graphs.cells(m);
@@ -98,6 +102,16 @@ int delayToFit(const FleetGraphs& graphs, const std::vector<Path>& merged, const
   while (forbidden.count(d)) ++d;
   for (Path& p : fresh) p.insert(p.begin(), static_cast<std::size_t>(d), p.front());
   return d;
+}
+
+void appendDelayed(std::vector<Path>& merged, int robot, Path delayed) {
+  Path& path = merged[robot];
+  if (path.empty()) {
+    path = std::move(delayed);
+    return;
+  }
+  const std::size_t from = path.size();  // delayed[from - 1] is where the path so far ends
+  path.insert(path.end(), delayed.begin() + static_cast<std::ptrdiff_t>(from), delayed.end());
 }
 
 }  // namespace fleet_planner

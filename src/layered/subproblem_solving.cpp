@@ -7,6 +7,7 @@
 #include <thread>
 
 #include "fleet_planner/layered/plan_merge.h"
+#include "fleet_planner/layered/step_aside.h"
 #include "fleet_planner/solvers/registry.h"
 
 namespace fleet_planner {
@@ -16,6 +17,10 @@ namespace {
 // Low-level expansions per robot a level may spend planning around the timed paths of its
 // cluster's earlier levels before it is planned at their targets and delayed instead.
 constexpr long long kChainExpansionsPerRobot = 50'000;
+
+// Cells between a robot's shortest path and the footprint of a standing robot that may step
+// aside for it.
+constexpr int kStepAsideMargin = 2;
 
 std::string idsOf(const Instance& instance, const std::vector<int>& robots) {
   std::string out;
@@ -57,13 +62,16 @@ class Solving {
                      (results_[k] ? failed.reason : std::string("not solved"));
         out.order = order_;
         out.merges = merges_;
+        out.step_asides = step_asides_;
         return out;
       }
+      if (!order_[k].step_aside_tried && letStepAside(k, failed)) continue;
       mergeWithNeighbour(k, failed);
     }
     out.paths = mergePlans();
     out.order = order_;
     out.merges = merges_;
+    out.step_asides = step_asides_;
     return out;
   }
 
@@ -114,23 +122,38 @@ class Solving {
     for (auto& t : pool) t.join();
   }
 
+  // The robots of the other subproblems where subproblem k sees them: earlier ones at their
+  // targets, later ones at their starts.
+  std::vector<StaticFootprint> standingFor(std::size_t k) const {
+    std::vector<StaticFootprint> out;
+    for (std::size_t m = 0; m < order_.size(); ++m) {
+      if (m == k) continue;
+      for (int r : order_[m].robots) out.push_back({r, m < k ? instance_.robots[r].target : instance_.robots[r].start});
+    }
+    return out;
+  }
+
   void solveOne(std::size_t k) {
     Subproblem sub;
     sub.instance = &instance_;
     sub.graphs = &graphs_;
     sub.robots = order_[k].robots;
     sub.seed = options_.seed + order_[k].seed_offset;
-    for (std::size_t m = k + 1; m < order_.size(); ++m) {
-      for (int r : order_[m].robots) sub.blocked.push_back({r, instance_.robots[r].start});
-    }
-    for (std::size_t m = 0; m < k; ++m) {
-      const bool own_chain = serial_ && order_[m].cluster == order_[k].cluster;
+    const std::vector<int>& aside = order_[k].stepping_aside;
+    sub.robots.insert(sub.robots.end(), aside.begin(), aside.end());
+    for (std::size_t m = 0; m < order_.size(); ++m) {
+      if (m == k) continue;
+      // A serial backend plans around its own cluster's earlier levels as they move.
+      const bool own_chain = serial_ && m < k && order_[m].cluster == order_[k].cluster;
       for (std::size_t a = 0; a < order_[m].robots.size(); ++a) {
         const int r = order_[m].robots[a];
+        const GridPose& pose = m < k ? instance_.robots[r].target : instance_.robots[r].start;
         if (own_chain) {
           sub.moving.push_back({r, results_[m]->paths[a]});
+        } else if (std::find(aside.begin(), aside.end(), r) != aside.end()) {
+          sub.returning.push_back({r, pose});
         } else {
-          sub.blocked.push_back({r, instance_.robots[r].target});
+          sub.blocked.push_back({r, pose});
         }
       }
     }
@@ -197,6 +220,34 @@ class Solving {
     return solved;
   }
 
+  // Safeguard, before a merge: subproblem k solved again with the robots of other subproblems
+  // near its robots' ways free to step aside (step_aside.h). For a serial backend it leaves its
+  // cluster's chain: it and the rest of the chain become clusters of their own, so that it is
+  // planned with the earlier levels at their targets and merged by delay. False if no robot
+  // stands near.
+  bool letStepAside(std::size_t k, const SolveResult& failed) {
+    SolvedSubproblem& s = order_[k];
+    s.step_aside_tried = true;
+    const std::vector<StaticFootprint> near =
+        robotsInTheWay(instance_, graphs_, s.robots, standingFor(k), kStepAsideMargin);
+    if (near.empty()) return false;
+    for (const StaticFootprint& f : near) s.stepping_aside.push_back(f.robot);
+    std::vector<int> ids = s.stepping_aside;
+    step_asides_.push_back("subproblem " + std::to_string(k) + " (" + idsOf(instance_, s.robots) + ") failed: " +
+                           (results_[k] ? failed.reason : std::string("not solved")) + "; solved again with " +
+                           std::to_string(near.size()) + " robots of other subproblems free to step aside (" +
+                           idsOf(instance_, ids) + ")");
+    if (serial_) {
+      int fresh = 0;
+      for (const auto& o : order_) fresh = std::max(fresh, o.cluster + 1);
+      const int chain = s.cluster;
+      s.cluster = fresh;
+      for (std::size_t m = k + 1; m < order_.size() && order_[m].cluster == chain; ++m) order_[m].cluster = fresh + 1;
+    }
+    results_[k].reset();
+    return true;
+  }
+
   // Safeguard: merge subproblem k with the next one (or, for the last, with the one before);
   // their clusters become one. Results that depended on either are dropped.
   void mergeWithNeighbour(std::size_t k, const SolveResult& failed) {
@@ -211,6 +262,10 @@ class Solving {
     const int keep = order_[first].cluster, gone = order_[first + 1].cluster;
     for (auto& s : order_) {
       if (s.cluster == gone) s.cluster = keep;
+    }
+    for (std::size_t m : {first, first + 1}) {
+      order_[m].stepping_aside.clear();
+      order_[m].step_aside_tried = false;
     }
     std::vector<int> joined = order_[first].robots;
     joined.insert(joined.end(), order_[first + 1].robots.begin(), order_[first + 1].robots.end());
@@ -238,11 +293,12 @@ class Solving {
       std::vector<Path> fresh;
       for (std::size_t m = k; m < end; ++m) {
         robots.insert(robots.end(), order_[m].robots.begin(), order_[m].robots.end());
+        robots.insert(robots.end(), order_[m].stepping_aside.begin(), order_[m].stepping_aside.end());
         fresh.insert(fresh.end(), results_[m]->paths.begin(), results_[m]->paths.end());
       }
       const int delay = delayToFit(graphs_, paths, done, robots, fresh);
       for (std::size_t a = 0; a < robots.size(); ++a) {
-        paths[robots[a]] = std::move(fresh[a]);
+        appendDelayed(paths, robots[a], std::move(fresh[a]));
         done[robots[a]] = 1;
       }
       for (std::size_t m = k; m < end; ++m) order_[m].delay = delay;
@@ -259,6 +315,7 @@ class Solving {
   std::vector<SolvedSubproblem> order_;
   std::vector<std::optional<SolveResult>> results_;
   std::vector<std::string> merges_;
+  std::vector<std::string> step_asides_;
   int pending_robots_ = 0;
 };
 

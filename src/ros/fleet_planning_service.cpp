@@ -467,6 +467,7 @@ void FleetPlanningService::planChecked(const Request& request, const StartLookup
   if (!result.success()) {
     std::string message = std::string(statusName(result.status)) + ": " + result.reason;
     if (deadline.cancelled()) message = "cancelled (the node is shutting down): " + result.reason;
+    for (const std::string& aside : result.step_asides) message += "; " + aside;
     for (const std::string& merge : result.merges) message += "; " + merge;
     fail(call, responseStatus(result.status), message);
     for (auto& r : res.robots) r.status = RobotResultMsg::NOT_PLANNED, r.message = "not planned: " + message;

@@ -15,6 +15,7 @@ std::vector<StatePath> jointRepair(const SearchSpace& space, const Subproblem& p
   sub.graphs = problem.graphs;
   sub.blocked = problem.blocked;
   sub.moving = problem.moving;
+  sub.returning = problem.returning;
   for (int a : group) sub.robots.push_back(space.robot(a));
   for (int b = 0; b < space.numAgents(); ++b) {
     if (!table.contains(b) || std::find(group.begin(), group.end(), b) != group.end()) continue;

@@ -68,8 +68,12 @@ SearchSpace::SearchSpace(const Subproblem& problem)
 
   for (int a = 0; a < numAgents(); ++a) {
     const Robot& r = instance_->robots[robots_[a]];
-    starts_.push_back(graph(a).id(r.start));
-    targets_.push_back(graph(a).id(r.target));
+    GridPose start = r.start, target = r.target;
+    for (const StaticFootprint& back : problem.returning) {
+      if (back.robot == robots_[a]) start = target = back.pose;
+    }
+    starts_.push_back(graph(a).id(start));
+    targets_.push_back(graph(a).id(target));
   }
   if (const MemoryGuard* guard = problem.deadline.memoryGuard()) {
     guard->reserve(static_cast<double>(numAgents()) * static_cast<double>(distanceTableBytes(
@@ -83,22 +87,24 @@ SearchSpace::SearchSpace(const Subproblem& problem)
       stopped_ = true;
       return;
     }
-    const Robot& r = instance_->robots[robots_[a]];
+    GridPose start = instance_->robots[robots_[a]].start, target = instance_->robots[robots_[a]].target;
+    if (graph(a).valid(starts_[a])) start = graph(a).pose(starts_[a]);
+    if (graph(a).valid(targets_[a])) target = graph(a).pose(targets_[a]);
     if (!graph(a).valid(starts_[a])) {
-      problem_ = label(a) + ": start " + toString(r.start) + " is not a valid state";
+      problem_ = label(a) + ": start " + toString(start) + " is not a valid state";
     } else if (!graph(a).valid(targets_[a])) {
-      problem_ = label(a) + ": target " + toString(r.target) + " is not a valid state";
+      problem_ = label(a) + ": target " + toString(target) + " is not a valid state";
     } else if (!allows(a, starts_[a], Action::Wait)) {
-      problem_ = label(a) + ": start " + toString(r.start) + " overlaps a footprint of another subproblem";
+      problem_ = label(a) + ": start " + toString(start) + " overlaps a footprint of another subproblem";
     } else if (!allows(a, targets_[a], Action::Wait)) {
-      problem_ = label(a) + ": target " + toString(r.target) + " overlaps a footprint of another subproblem";
+      problem_ = label(a) + ": target " + toString(target) + " overlaps a footprint of another subproblem";
     } else {
       if (!restrictedDistances(*this, a, problem.deadline, distances_[a])) {
         stopped_ = true;
         return;
       }
       if (distances_[a][starts_[a]] < 0) {
-        problem_ = label(a) + ": target " + toString(r.target) + " is not reachable from start " + toString(r.start);
+        problem_ = label(a) + ": target " + toString(target) + " is not reachable from start " + toString(start);
       }
     }
   }

@@ -14,15 +14,14 @@ namespace {
 SolveResult make(SolveStatus status, std::string reason) { return failedResult(status, std::move(reason)); }
 
 // Two agents whose starts, or whose targets, overlap can never be solved.
-std::string overlapProblem(const SearchSpace& space, const Subproblem& problem) {
+std::string overlapProblem(const SearchSpace& space) {
   const int n = space.numAgents();
   for (int a = 0; a < n; ++a) {
     for (int b = a + 1; b < n; ++b) {
-      const Robot& ra = problem.instance->robots[space.robot(a)];
-      const Robot& rb = problem.instance->robots[space.robot(b)];
-      if (footprintsOverlap(space.cells(a), ra.start, space.cells(b), rb.start))
+      const auto pose = [&](int agent, StateId s) { return space.graph(agent).pose(s); };
+      if (footprintsOverlap(space.cells(a), pose(a, space.start(a)), space.cells(b), pose(b, space.start(b))))
         return space.label(a) + " and " + space.label(b) + " overlap at their starts";
-      if (footprintsOverlap(space.cells(a), ra.target, space.cells(b), rb.target))
+      if (footprintsOverlap(space.cells(a), pose(a, space.target(a)), space.cells(b), pose(b, space.target(b))))
         return space.label(a) + " and " + space.label(b) + " overlap at their targets";
     }
   }
@@ -50,7 +49,7 @@ SolveResult solveWith(const Subproblem& problem, bool moving_allowed,
       } else if (space.stopped()) {
         result = make(problem.deadline.cancelled() ? SolveStatus::Cancelled : SolveStatus::Timeout,
                       "deadline passed while the distance tables were built");
-      } else if (std::string overlap = overlapProblem(space, problem); !overlap.empty()) {
+      } else if (std::string overlap = overlapProblem(space); !overlap.empty()) {
         result = make(SolveStatus::Infeasible, overlap);
       } else if (problem.deadline.expired()) {
         result = make(problem.deadline.cancelled() ? SolveStatus::Cancelled : SolveStatus::Timeout,

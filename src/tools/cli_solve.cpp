@@ -113,6 +113,7 @@ void addSolveCommand(CLI::App& app) {
                      {"solved_subproblems", result.subproblems.size()},
                      {"max_solved_subproblem", largest},
                      {"merges", result.merges},
+                     {"step_asides", result.step_asides},
                      {"solved_by_fallback", solvedByFallback(result)},
                      {"refine_s", result.refinement.time_s},
                      {"refine_searches", result.refinement.searches},
@@ -127,9 +128,11 @@ void addSolveCommand(CLI::App& app) {
       for (const auto& s : result.subproblems) {
         nlohmann::json ids = nlohmann::json::array();
         for (int r : s.robots) ids.push_back(p.instance.robots[r].id);
+        nlohmann::json aside = nlohmann::json::array();
+        for (int r : s.stepping_aside) aside.push_back(p.instance.robots[r].id);
         list.push_back({{"robots", ids}, {"cluster", s.cluster}, {"level", s.level}, {"status", statusName(s.status)},
                         {"time_s", s.time_s}, {"delay", s.delay}, {"high_level_nodes", s.stats.high_level_nodes},
-                        {"low_level_expansions", s.stats.low_level_expansions}, {"by_fallback", s.by_fallback}});
+                        {"low_level_expansions", s.stats.low_level_expansions}, {"by_fallback", s.by_fallback}, {"stepping_aside", aside}});
       }
       j["subproblem_details"] = list;
     }

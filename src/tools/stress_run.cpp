@@ -80,7 +80,7 @@ RunOutcome solveOnce(const StressCase& c, const StressConfig& config, double lim
       out.plan_hash = hashPlan(result.plan);
       out.soc = result.metrics.soc;
       // The refinement and compression budgets are counts, but the deadline can also cut them.
-      out.deterministic_candidate = result.merges.empty() && result.decomposition.complete &&
+      out.deterministic_candidate = result.merges.empty() && result.step_asides.empty() && result.decomposition.complete &&
                                     !result.refinement.deadline_hit && !result.compression.deadline_hit;
     }
   } catch (const DeadlineExpired& e) {  // the state graphs were not done in time: a TIMEOUT

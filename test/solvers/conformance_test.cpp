@@ -187,6 +187,23 @@ TEST_P(Conformance, StaticFootprintForcesDetour) {
                       << describe(o);
 }
 
+TEST_P(Conformance, ReturningRobotStepsAsideAndComesBack) {
+  // The helper stands in the corridor at (3, 0), away from its own start and target (3, 2): it
+  // is planned from and back to that pose, and has to wait in the pocket while the runner passes.
+  const World w(mapFromRows({".......", "@@@.@@@", "@@@.@@@"}),
+                {dot("runner", {0, 0, 0}, {6, 0, 0}), dot("helper", {3, 2, 0}, {3, 2, 0})});
+  Subproblem sub = allRobots(w);
+  sub.returning = {{1, {3, 0, 0}}};
+  const Outcome o = solveWith(GetParam(), w, sub);
+  ASSERT_TRUE(solvedValidly(o));
+  const Path& helper = o.plan.paths[1];
+  EXPECT_EQ(helper.front(), (GridPose{3, 0, 0})) << describe(o);
+  EXPECT_EQ(helper.back(), (GridPose{3, 0, 0})) << describe(o);
+  bool pocket_used = false;
+  for (const GridPose& s : helper) pocket_used = pocket_used || (s.x == 3 && s.y == 1);
+  EXPECT_TRUE(pocket_used) << describe(o);
+}
+
 TEST_P(Conformance, ExpiredDeadlineTimesOut) {
   const World w = tJunction();
   Subproblem sub = allRobots(w);

@@ -78,6 +78,9 @@ std::string toInstanceOrder(const World& world, const Subproblem& sub,
   for (int r = 0; r < n; ++r) {
     if (slot[r] < 0) continue;
     planned.robots.push_back(world.instance.robots[r]);
+    for (const StaticFootprint& back : sub.returning) {  // planned from and back to that pose
+      if (back.robot == r) planned.robots.back().start = planned.robots.back().target = back.pose;
+    }
     plan.paths.push_back(paths[slot[r]]);
   }
   return "";

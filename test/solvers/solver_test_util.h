@@ -62,7 +62,8 @@ struct Outcome {
 };
 
 /// Maps `paths` (one per Subproblem::robots entry, same order) to a plan over `planned` (the
-/// subproblem's robots in instance order). Returns the problem (wrong count, duplicate or
+/// subproblem's robots in instance order; a robot of Subproblem::returning starts and ends at its
+/// pose there). Returns the problem (wrong count, duplicate or
 /// out-of-range robot index) or an empty string.
 std::string toInstanceOrder(const World& world, const Subproblem& sub,
                             const std::vector<Path>& paths, Instance& planned, Plan& plan);

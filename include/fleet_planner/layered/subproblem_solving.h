@@ -18,7 +18,9 @@
 ///   those robots at their targets instead and delayed until it fits among their paths.
 ///
 /// Units run on a pool of `threads`. Then the subproblems are merged in order. The first one
-/// that failed, while time remains, is merged with its neighbour (the next one, or for the last
+/// that failed, while time remains, is solved again with the robots of other subproblems near
+/// its robots' ways free to step aside and come back (step_aside.h); if that fails too, it is
+/// merged with its neighbour (the next one, or for the last
 /// the one before; their clusters become one) and the units it touched are solved again;
 /// every merge is reported. With a fallback backend, a subproblem that the backend fails within
 /// the first part of its time share is tried with the fallback in the rest before that. Each
@@ -52,6 +54,10 @@ struct SolvedSubproblem {
   /// The backend failed (not INFEASIBLE) within the first part of its time share, and the
   /// fallback backend solved it in the rest.
   bool by_fallback = false;
+  /// Robots of other subproblems planned with it, from and back to where they stand, after it
+  /// failed with them as obstacles (step_aside.h); their paths follow its robots' in the result.
+  std::vector<int> stepping_aside;
+  bool step_aside_tried = false;  ///< since its last merge
 };
 
 struct SubproblemSolving {
@@ -60,6 +66,7 @@ struct SubproblemSolving {
   std::vector<Path> paths;                 ///< on success: one per robot of the instance
   std::vector<SolvedSubproblem> order;     ///< as solved, in order
   std::vector<std::string> merges;         ///< one line per safeguard merge
+  std::vector<std::string> step_asides;    ///< one line per subproblem solved again with robots stepping aside
 };
 
 struct SubproblemSolvingOptions {

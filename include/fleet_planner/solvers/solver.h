@@ -35,6 +35,10 @@ struct Subproblem {
   std::vector<int> robots;               ///< instance indices of the robots to plan
   std::vector<StaticFootprint> blocked;  ///< cells covered by these footprints are blocked
   std::vector<MovingObstacle> moving;    ///< serial backends avoid these; others reject them
+  /// Robots of `robots` planned from and back to the pose given here instead of from their start
+  /// to their target: robots of other subproblems standing in the way, which may step aside
+  /// and come back. Entries for robots not in `robots` are ignored.
+  std::vector<StaticFootprint> returning;
   Deadline deadline;
   std::uint64_t seed = 0;
   /// Low-level expansions the backend may spend before answering TIMEOUT (-1: no limit).

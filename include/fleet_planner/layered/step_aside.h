@@ -1,0 +1,24 @@
+#pragma once
+/// Robots of other subproblems that may have to step aside for a subproblem (beyond the paper).
+/// A subproblem sees the robots of earlier subproblems at their targets and those of later ones
+/// at their starts, as static obstacles. The decomposition makes sure that each robot alone can
+/// pass them, but not that the subproblem's robots can pass each other as well: two robots that
+/// must swap in a corridor may need the pocket that a standing robot fills. Such a subproblem
+/// is solved again with the standing robots near its robots' ways as robots of its own, planned
+/// from and back to where they stand.
+#include <vector>
+
+#include "fleet_planner/core/fleet_graphs.h"
+#include "fleet_planner/core/instance.h"
+#include "fleet_planner/solvers/solver.h"
+
+namespace fleet_planner {
+
+/// The entries of `standing` whose footprint comes within `margin` cells of a shortest path
+/// (in its own state graph, ignoring other robots) of one of `robots`, in the order of
+/// `standing`.
+std::vector<StaticFootprint> robotsInTheWay(const Instance& instance, const FleetGraphs& graphs,
+                                            const std::vector<int>& robots,
+                                            const std::vector<StaticFootprint>& standing, int margin);
+
+}  // namespace fleet_planner

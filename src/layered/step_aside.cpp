@@ -1,0 +1,59 @@
+// Robots that may have to step aside; see step_aside.h.
+#include "fleet_planner/layered/step_aside.h"
+
+#include <cstdlib>
+
+#include "fleet_planner/core/graph_search.h"
+#include "path_steps.h"
+
+namespace fleet_planner {
+
+namespace {
+
+// The poses of one shortest path from the robot's start to its target (empty if none).
+std::vector<GridPose> shortestPath(const StateGraph& graph, const Robot& robot) {
+  const StateId start = graph.id(robot.start), target = graph.id(robot.target);
+  if (!graph.valid(start) || !graph.valid(target)) return {};
+  const std::vector<std::int32_t> dist = distancesTo(graph, target);
+  if (dist[start] < 0) return {};
+  std::vector<GridPose> path{graph.pose(start)};
+  for (StateId s = start; s != target;) {
+    StateId next = kNoState;
+    graph.forEachSuccessor(s, [&](Action, StateId n) {
+      if (next == kNoState && dist[n] == dist[s] - 1) next = n;
+    });
+    s = next;
+    path.push_back(graph.pose(s));
+  }
+  return path;
+}
+
+}  // namespace
+
+std::vector<StaticFootprint> robotsInTheWay(const Instance& instance, const FleetGraphs& graphs,
+                                            const std::vector<int>& robots,
+                                            const std::vector<StaticFootprint>& standing, int margin) {
+  std::vector<char> near(standing.size(), 0);
+  for (int r : robots) {
+    const std::vector<GridPose> path = shortestPath(graphs.graph(r), instance.robots[r]);
+    const int own = path_steps::radiusOf(graphs.cells(r)) + margin;
+    for (std::size_t j = 0; j < standing.size(); ++j) {
+      if (near[j]) continue;
+      const GridPose& at = standing[j].pose;
+      const int reach = own + path_steps::radiusOf(graphs.cells(standing[j].robot));
+      for (const GridPose& p : path) {
+        if (std::abs(p.x - at.x) <= reach && std::abs(p.y - at.y) <= reach) {
+          near[j] = 1;
+          break;
+        }
+      }
+    }
+  }
+  std::vector<StaticFootprint> out;
+  for (std::size_t j = 0; j < standing.size(); ++j) {
+    if (near[j]) out.push_back(standing[j]);
+  }
+  return out;
+}
+
+}  // namespace fleet_planner
