@@ -4,8 +4,10 @@
 #include <algorithm>
 #include <atomic>
 #include <optional>
+#include <set>
 #include <thread>
 
+#include "fleet_planner/layered/infeasible_pairs.h"
 #include "fleet_planner/layered/plan_merge.h"
 #include "fleet_planner/layered/step_aside.h"
 #include "fleet_planner/solvers/registry.h"
@@ -21,6 +23,12 @@ constexpr long long kChainExpansionsPerRobot = 50'000;
 // Cells between a robot's shortest path and the footprint of a standing robot that may step
 // aside for it.
 constexpr int kStepAsideMargin = 2;
+
+// Pairs of a failed subproblem's robots tried for an infeasibility proof (infeasible_pairs.h)
+// per failure, the expansions of each, and the part of the time left they may take.
+constexpr std::size_t kPairsPerFailure = 120;
+constexpr long long kPairExpansions = 500'000;
+constexpr double kPairTimeShare = 0.1;
 
 std::string idsOf(const Instance& instance, const std::vector<int>& robots) {
   std::string out;
@@ -60,6 +68,15 @@ class Solving {
                                              : failed.status;
         out.reason = "subproblem " + std::to_string(k) + " (" + idsOf(instance_, order_[k].robots) + "): " +
                      (results_[k] ? failed.reason : std::string("not solved"));
+        out.order = order_;
+        out.merges = merges_;
+        out.step_asides = step_asides_;
+        return out;
+      }
+      if (std::optional<std::string> proof = infeasiblePairIn(k)) {
+        out.status = SolveStatus::Infeasible;
+        out.reason = *proof + "; found after subproblem " + std::to_string(k) + " (" + idsOf(instance_, order_[k].robots) +
+                     ") failed: " + (results_[k] ? failed.reason : std::string("not solved"));
         out.order = order_;
         out.merges = merges_;
         out.step_asides = step_asides_;
@@ -220,6 +237,22 @@ class Solving {
     return solved;
   }
 
+  // A pair of subproblem k's robots that no plan can serve, if one is proven among the pairs
+  // not tried before.
+  std::optional<std::string> infeasiblePairIn(std::size_t k) {
+    std::vector<std::pair<int, int>> pairs;
+    const std::vector<int>& robots = order_[k].robots;
+    for (std::size_t i = 0; i < robots.size() && pairs.size() < kPairsPerFailure; ++i) {
+      for (std::size_t j = i + 1; j < robots.size() && pairs.size() < kPairsPerFailure; ++j) {
+        const std::pair<int, int> p{std::min(robots[i], robots[j]), std::max(robots[i], robots[j])};
+        if (tried_pairs_.insert(p).second) pairs.push_back(p);
+      }
+    }
+    if (pairs.empty()) return std::nullopt;
+    return findInfeasiblePair(instance_, graphs_, pairs, kPairExpansions,
+                              deadline_.within(deadline_.remaining() * kPairTimeShare));
+  }
+
   // Safeguard, before a merge: subproblem k solved again with the robots of other subproblems
   // near its robots' ways free to step aside (step_aside.h). For a serial backend it leaves its
   // cluster's chain: it and the rest of the chain become clusters of their own, so that it is
@@ -316,6 +349,7 @@ class Solving {
   std::vector<std::optional<SolveResult>> results_;
   std::vector<std::string> merges_;
   std::vector<std::string> step_asides_;
+  std::set<std::pair<int, int>> tried_pairs_;
   int pending_robots_ = 0;
 };
 

@@ -63,6 +63,10 @@ class LacamSearch {
         return failure(SolveStatus::Timeout, "search reached its memory limit of " +
                                                  std::to_string(static_cast<int>(options_.max_memory_mb)) + " MB");
       }
+      if (problem_.max_expansions >= 0 && stats_.low_level_expansions > problem_.max_expansions) {
+        return failure(SolveStatus::Timeout,
+                       "expansion budget of " + std::to_string(problem_.max_expansions) + " used up");
+      }
       const int id = open.back();
       std::copy_n(configOf(id), n_, current.begin());
       if (current == goal) return success(id);

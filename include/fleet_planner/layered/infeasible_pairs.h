@@ -1,0 +1,27 @@
+#pragma once
+/// Proof that an instance has no plan (beyond the paper): two of its robots that cannot both
+/// reach their targets even alone on the map. Dropping robots from a valid plan leaves a valid
+/// plan, so such a pair makes the whole instance infeasible. LA-LaCAM decides a pair: its search
+/// over joint configurations is complete, and it ends either with a plan or with every reachable
+/// configuration explored. Used on subproblems that failed, where a knot of robots that no
+/// backend unties may be no knot but an impossibility (e.g. a wide robot whose start and target
+/// fill the only corridor that another robot must cross).
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "fleet_planner/core/deadline.h"
+#include "fleet_planner/core/fleet_graphs.h"
+#include "fleet_planner/core/instance.h"
+
+namespace fleet_planner {
+
+/// The first of `pairs` (instance indices) proven unable to reach both targets, as a message
+/// naming both robots; nullopt if none is proven (each pair's search stops after
+/// `max_expansions`, and all stop at the deadline).
+std::optional<std::string> findInfeasiblePair(const Instance& instance, const FleetGraphs& graphs,
+                                              const std::vector<std::pair<int, int>>& pairs,
+                                              long long max_expansions, const Deadline& deadline);
+
+}  // namespace fleet_planner

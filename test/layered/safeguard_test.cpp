@@ -1,0 +1,101 @@
+// The safeguard's steps before a merge (beyond the paper): the proof that two robots of a failed
+// subproblem cannot both reach their targets, and the standing robots that step aside.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include "fleet_planner/core/plan_validator.h"
+#include "fleet_planner/layered/infeasible_pairs.h"
+#include "fleet_planner/layered/plan_merge.h"
+#include "fleet_planner/layered/step_aside.h"
+#include "fleet_planner/layered_planner.h"
+#include "test_maps.h"
+#include "test_robots.h"
+
+namespace fleet_planner {
+namespace {
+
+using test::dot;
+using test::footprintsOf;
+
+// Two robots trading ends of a corridor: with a side pocket they can, without one they cannot.
+Instance swapThrough(int length) {
+  Instance in;
+  in.robots = {dot("A", {0, 0, 0}, {length - 1, 0, 0}), dot("B", {length - 1, 0, 1}, {0, 0, 1})};
+  return in;
+}
+
+TEST(InfeasiblePairs, CorridorSwapWithoutPocketIsProvenAndNamesBothRobots) {
+  const GridMap map = test::mapFromRows({"......."});
+  const Instance in = swapThrough(7);
+  const FleetGraphs graphs(map, footprintsOf(in));
+  const std::optional<std::string> proof = findInfeasiblePair(in, graphs, {{0, 1}}, 1'000'000, Deadline::in(5.0));
+  ASSERT_TRUE(proof.has_value());
+  EXPECT_NE(proof->find("'A' and 'B'"), std::string::npos) << *proof;
+}
+
+TEST(InfeasiblePairs, CorridorSwapWithPocketIsNotProven) {
+  const GridMap map = test::mapFromRows({".......", "@@@.@@@"});
+  const Instance in = swapThrough(7);
+  const FleetGraphs graphs(map, footprintsOf(in));
+  EXPECT_FALSE(findInfeasiblePair(in, graphs, {{0, 1}}, 1'000'000, Deadline::in(5.0)).has_value());
+}
+
+TEST(InfeasiblePairs, ABudgetTooSmallProvesNothing) {
+  const GridMap map = test::mapFromRows({"......."});
+  const Instance in = swapThrough(7);
+  const FleetGraphs graphs(map, footprintsOf(in));
+  EXPECT_FALSE(findInfeasiblePair(in, graphs, {{0, 1}}, 0, Deadline::in(5.0)).has_value());
+}
+
+// The layered planner answers INFEASIBLE, naming the pair, instead of merging and timing out:
+// each robot alone passes the pre-check, the level {A, B} fails, and the pair proof ends it.
+TEST(InfeasiblePairs, LayeredPlannerReportsTheProvenPair) {
+  const GridMap map = test::mapFromRows({".......", "@@@@@@@", "......."});
+  Instance in = swapThrough(7);
+  in.robots.push_back(dot("C", {0, 2, 0}, {6, 2, 0}));
+  const FleetGraphs graphs(map, footprintsOf(in));
+  for (const char* backend : {"la_cbs", "la_lacam", "la_lns"}) {
+    LayeredOptions o;
+    o.backend = backend;
+    const LayeredResult r = planLayered(map, in, graphs, o, Deadline::in(2.0));
+    EXPECT_EQ(r.status, SolveStatus::Infeasible) << backend << ": " << r.reason;
+    EXPECT_NE(r.reason.find("'A' and 'B' cannot both reach"), std::string::npos) << backend << ": " << r.reason;
+  }
+}
+
+TEST(StepAside, PicksStandingRobotsNearTheWayOnly) {
+  // A's shortest path runs along row 0; one robot stands beside it, one far below.
+  const GridMap map = test::freeMap(12, 12);
+  Instance in;
+  in.robots = {dot("A", {0, 0, 0}, {11, 0, 0}), dot("near", {5, 2, 0}, {5, 2, 0}), dot("far", {5, 11, 0}, {5, 11, 0})};
+  const FleetGraphs graphs(map, footprintsOf(in));
+  const std::vector<StaticFootprint> standing{{1, {5, 2, 0}}, {2, {5, 11, 0}}};
+  const std::vector<StaticFootprint> near = robotsInTheWay(in, graphs, {0}, standing, 2);
+  ASSERT_EQ(near.size(), 1u);
+  EXPECT_EQ(near[0].robot, 1);
+}
+
+TEST(PlanMerge, ARobotWithAPathContinuesItAfterItsEnd) {
+  // h drove to (3, 0) earlier; now it steps into the pocket and back. Its new part starts once
+  // its earlier path has ended, and its own earlier path does not delay it further.
+  const GridMap map = test::mapFromRows({".......", "@@@.@@@"});
+  Instance in;
+  in.robots = {dot("h", {0, 0, 0}, {3, 0, 0}), dot("o", {6, 0, 1}, {6, 0, 1})};
+  const FleetGraphs graphs(map, footprintsOf(in));
+  std::vector<Path> merged{{{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {3, 0, 0}}, {{6, 0, 1}}};
+  const std::vector<char> done{1, 1};
+  std::vector<Path> fresh{{{3, 0, 0}, {3, 0, 2}, {3, 1, 2}, {3, 1, 0}, {3, 1, 3}, {3, 0, 3}, {3, 0, 0}}};
+  EXPECT_EQ(delayToFit(graphs, merged, done, {0}, fresh), 3);
+  appendDelayed(merged, 0, fresh[0]);
+  const Path expected{{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {3, 0, 0}, {3, 0, 2},
+                      {3, 1, 2}, {3, 1, 0}, {3, 1, 3}, {3, 0, 3}, {3, 0, 0}};
+  EXPECT_EQ(merged[0], expected);
+  Plan plan;
+  plan.paths = merged;
+  const ValidationResult v = validatePlan(map, in, plan);
+  EXPECT_TRUE(v.valid()) << v.violation.message;
+}
+
+}  // namespace
+}  // namespace fleet_planner
