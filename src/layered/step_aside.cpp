@@ -1,6 +1,7 @@
 // Robots that may have to step aside; see step_aside.h.
 #include "fleet_planner/layered/step_aside.h"
 
+#include <algorithm>
 #include <cstdlib>
 
 #include "fleet_planner/core/graph_search.h"
@@ -32,27 +33,31 @@ std::vector<GridPose> shortestPath(const StateGraph& graph, const Robot& robot) 
 
 std::vector<StaticFootprint> robotsInTheWay(const Instance& instance, const FleetGraphs& graphs,
                                             const std::vector<int>& robots,
-                                            const std::vector<StaticFootprint>& standing, int margin) {
-  std::vector<char> near(standing.size(), 0);
+                                            const std::vector<StaticFootprint>& standing, int margin,
+                                            std::size_t max_count) {
+  // Per standing robot: its smallest gap (cells, Chebyshev, beyond both radii) to a way.
+  constexpr int kFar = 1 << 30;
+  std::vector<int> gap(standing.size(), kFar);
   for (int r : robots) {
     const std::vector<GridPose> path = shortestPath(graphs.graph(r), instance.robots[r]);
-    const int own = path_steps::radiusOf(graphs.cells(r)) + margin;
+    const int own = path_steps::radiusOf(graphs.cells(r));
     for (std::size_t j = 0; j < standing.size(); ++j) {
-      if (near[j]) continue;
       const GridPose& at = standing[j].pose;
       const int reach = own + path_steps::radiusOf(graphs.cells(standing[j].robot));
       for (const GridPose& p : path) {
-        if (std::abs(p.x - at.x) <= reach && std::abs(p.y - at.y) <= reach) {
-          near[j] = 1;
-          break;
-        }
+        gap[j] = std::min(gap[j], std::max(std::abs(p.x - at.x), std::abs(p.y - at.y)) - reach);
       }
     }
   }
-  std::vector<StaticFootprint> out;
+  std::vector<std::size_t> near;
   for (std::size_t j = 0; j < standing.size(); ++j) {
-    if (near[j]) out.push_back(standing[j]);
+    if (gap[j] <= margin) near.push_back(j);
   }
+  std::stable_sort(near.begin(), near.end(), [&](std::size_t a, std::size_t b) { return gap[a] < gap[b]; });
+  if (near.size() > max_count) near.resize(max_count);
+  std::sort(near.begin(), near.end());
+  std::vector<StaticFootprint> out;
+  for (std::size_t j : near) out.push_back(standing[j]);
   return out;
 }
 

@@ -21,8 +21,9 @@ namespace {
 constexpr long long kChainExpansionsPerRobot = 50'000;
 
 // Cells between a robot's shortest path and the footprint of a standing robot that may step
-// aside for it.
+// aside for it; at most as many as the subproblem has robots (the nearest), and at least 8.
 constexpr int kStepAsideMargin = 2;
+constexpr std::size_t kStepAsideMinCount = 8;
 
 // Pairs of a failed subproblem's robots tried for an infeasibility proof (infeasible_pairs.h)
 // per failure, the expansions of each, and the part of the time left they may take.
@@ -262,7 +263,8 @@ class Solving {
     SolvedSubproblem& s = order_[k];
     s.step_aside_tried = true;
     const std::vector<StaticFootprint> near =
-        robotsInTheWay(instance_, graphs_, s.robots, standingFor(k), kStepAsideMargin);
+        robotsInTheWay(instance_, graphs_, s.robots, standingFor(k), kStepAsideMargin,
+                       std::max(kStepAsideMinCount, s.robots.size()));
     if (near.empty()) return false;
     for (const StaticFootprint& f : near) s.stepping_aside.push_back(f.robot);
     std::vector<int> ids = s.stepping_aside;

@@ -71,9 +71,21 @@ TEST(StepAside, PicksStandingRobotsNearTheWayOnly) {
   in.robots = {dot("A", {0, 0, 0}, {11, 0, 0}), dot("near", {5, 2, 0}, {5, 2, 0}), dot("far", {5, 11, 0}, {5, 11, 0})};
   const FleetGraphs graphs(map, footprintsOf(in));
   const std::vector<StaticFootprint> standing{{1, {5, 2, 0}}, {2, {5, 11, 0}}};
-  const std::vector<StaticFootprint> near = robotsInTheWay(in, graphs, {0}, standing, 2);
+  const std::vector<StaticFootprint> near = robotsInTheWay(in, graphs, {0}, standing, 2, 8);
   ASSERT_EQ(near.size(), 1u);
   EXPECT_EQ(near[0].robot, 1);
+}
+
+TEST(StepAside, KeepsTheNearestWhenCapped) {
+  const GridMap map = test::freeMap(12, 12);
+  Instance in;
+  in.robots = {dot("A", {0, 0, 0}, {11, 0, 0}), dot("beside", {5, 3, 0}, {5, 3, 0}), dot("on", {8, 1, 0}, {8, 1, 0})};
+  const FleetGraphs graphs(map, footprintsOf(in));
+  const std::vector<StaticFootprint> standing{{1, {5, 3, 0}}, {2, {8, 1, 0}}};
+  EXPECT_EQ(robotsInTheWay(in, graphs, {0}, standing, 2, 8).size(), 2u);
+  const std::vector<StaticFootprint> one = robotsInTheWay(in, graphs, {0}, standing, 2, 1);
+  ASSERT_EQ(one.size(), 1u);
+  EXPECT_EQ(one[0].robot, 2);
 }
 
 TEST(PlanMerge, ARobotWithAPathContinuesItAfterItsEnd) {

@@ -15,10 +15,11 @@
 namespace fleet_planner {
 
 /// The entries of `standing` whose footprint comes within `margin` cells of a shortest path
-/// (in its own state graph, ignoring other robots) of one of `robots`, in the order of
-/// `standing`.
+/// (in its own state graph, ignoring other robots) of one of `robots`: the `max_count` nearest
+/// (ties: first in `standing`), in the order of `standing`.
 std::vector<StaticFootprint> robotsInTheWay(const Instance& instance, const FleetGraphs& graphs,
                                             const std::vector<int>& robots,
-                                            const std::vector<StaticFootprint>& standing, int margin);
+                                            const std::vector<StaticFootprint>& standing, int margin,
+                                            std::size_t max_count);
 
 }  // namespace fleet_planner
