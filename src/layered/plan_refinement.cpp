@@ -119,6 +119,16 @@ RefinementStats refinePlan(const Instance& instance, const FleetGraphs& graphs, 
   std::vector<int> lower(n, 0);
   std::vector<char> known(n, 0);
   std::vector<Path> ideal(n);
+  // A search is started only if the longest one so far would still end before the deadline:
+  // on hundreds of long paths, building one search's reservation table takes most of a second.
+  double longest_search_s = 0.0;
+  auto outOfTime = [&] { return deadline.expired() || deadline.remaining() < longest_search_s; };
+  auto timed = [&](auto&& search) {
+    const auto t = std::chrono::steady_clock::now();
+    auto result = search();
+    longest_search_s = std::max(longest_search_s, std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count());
+    return result;
+  };
   auto delayOrder = [&] {
     std::vector<int> order(n);
     std::iota(order.begin(), order.end(), 0);
@@ -131,7 +141,7 @@ RefinementStats refinePlan(const Instance& instance, const FleetGraphs& graphs, 
   auto groupPass = [&] {
     int improved = 0;
     for (int i : delayOrder()) {
-      if (deadline.expired() || stats.expansions >= max_expansions) break;
+      if (outOfTime() || stats.expansions >= max_expansions) break;
       if (!known[i] || costOf(i) <= lower[i]) continue;
       if (ideal[i].empty()) ideal[i] = idealPath(instance, graphs, i, deadline);
       std::vector<int> group = blockers(graphs, paths, i, ideal[i], options.group_size - 1);
@@ -154,7 +164,7 @@ RefinementStats refinePlan(const Instance& instance, const FleetGraphs& graphs, 
       cbs_options.max_low_level_nodes = options.max_nodes_per_search;
       cbs_options.max_total_expansions = options.group_expansions;
       ++stats.group_searches;
-      const SolveResult solved = LaCbs(cbs_options).solve(sub);
+      const SolveResult solved = timed([&] { return LaCbs(cbs_options).solve(sub); });
       stats.expansions += solved.stats.low_level_expansions;
       if (!solved.success()) continue;
       long long after = 0;
@@ -171,16 +181,17 @@ RefinementStats refinePlan(const Instance& instance, const FleetGraphs& graphs, 
     }
     return improved;
   };
-  while (stats.passes < options.max_passes && !deadline.expired() && stats.expansions < max_expansions) {
+  while (stats.passes < options.max_passes && !outOfTime() && stats.expansions < max_expansions) {
     ++stats.passes;
     int improved = 0;
     for (int i : delayOrder()) {
-      if (deadline.expired() || stats.expansions >= max_expansions) break;
+      if (outOfTime() || stats.expansions >= max_expansions) break;
       const int cost = costOf(i);
       if (known[i] && cost <= lower[i]) continue;
       ++stats.searches;
       int bound = lower[i];
-      Path better = cheaperPath(instance, graphs, paths, i, cost, deadline, options, bound, stats.expansions);
+      Path better =
+          timed([&] { return cheaperPath(instance, graphs, paths, i, cost, deadline, options, bound, stats.expansions); });
       lower[i] = bound;
       known[i] = 1;
       if (better.empty()) continue;
@@ -197,7 +208,7 @@ RefinementStats refinePlan(const Instance& instance, const FleetGraphs& graphs, 
     stats.improved += grouped;
     if (grouped == 0) break;
   }
-  stats.deadline_hit = deadline.expired();
+  stats.deadline_hit = outOfTime();
   stats.time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return stats;
 }
