@@ -5,7 +5,6 @@
 // starts of every level after it.
 #include <algorithm>
 #include <functional>
-#include <optional>
 
 #include "dependency_oracle.h"
 
@@ -226,40 +225,19 @@ std::vector<std::vector<int>> bipartitionLevels(DependencyOracle& oracle, const 
     // Peeling (beyond the paper): a robot that can go before all the others of the level, or
     // after all of them, becomes a level of its own. Passes over the level, in order, peel every
     // robot that can go at that moment; they repeat while one peels.
-    // A way (its SATs) of each robot of the level around `base`, kept while it stays clear of
-    // what `base` gains: only whether a robot has a way matters here, and a way that avoids the
-    // new SAT is still one. Saves re-asking the oracle for every robot at every candidate.
-    std::vector<std::optional<std::vector<int>>> way(n);
-    std::vector<char> way_known(n, 0);
-    Mask base = LevelSplitter::with(splitter.targetsOf(earlier), splitter.startsOf(later));
-    auto wayOf = [&](int j) -> const std::optional<std::vector<int>>& {
-      if (!way_known[j]) {
-        way[j] = oracle.sats(j, splitter.avail(), base);
-        way_known[j] = 1;
-      }
-      return way[j];
-    };
-    auto avoidFromNowOn = [&](int sat) {
-      base[sat] = 1;
-      for (int j = 0; j < n; ++j) {
-        if (way_known[j] && (!way[j] || std::binary_search(way[j]->begin(), way[j]->end(), sat))) way_known[j] = 0;
-      }
-    };
     for (bool peeled = peel; peeled && rest.size() > 1 && !deadline.expired();) {
       peeled = false;
       const std::vector<int> candidates = rest;
       for (int i : candidates) {
         if (rest.size() <= 1 || deadline.expired()) break;
         const Mask others = maskOf(rest, n);
+        const Mask base = LevelSplitter::with(splitter.targetsOf(earlier), splitter.startsOf(later));
         // Every other robot of the level must still have its way once i's SAT is avoided too.
         auto othersKeepClearOf = [&](int sat) {
           Mask avoid = base;
           avoid[sat] = 1;
           for (int j : rest) {
-            if (j == i) continue;
-            const std::optional<std::vector<int>>& known = wayOf(j);
-            if (known && !std::binary_search(known->begin(), known->end(), sat)) continue;
-            if (!oracle.sats(j, splitter.avail(), avoid)) return false;
+            if (j != i && !oracle.sats(j, splitter.avail(), avoid)) return false;
           }
           return true;
         };
@@ -269,12 +247,10 @@ std::vector<std::vector<int>> bipartitionLevels(DependencyOracle& oracle, const 
             othersKeepClearOf(2 * i + 1)) {
           out.push_back({i});  // first: clear of every start still waiting; the others of its target
           earlier[i] = 1;
-          avoidFromNowOn(2 * i + 1);
         } else if (oracle.sats(i, splitter.avail(), LevelSplitter::with(base, splitter.targetsOf(rest_but_i))) &&
                    othersKeepClearOf(2 * i)) {
           tail.push_back({i});  // last: clear of every target reached before it; the others of its start
           later[i] = 1;
-          avoidFromNowOn(2 * i);
         } else {
           continue;
         }

@@ -271,11 +271,10 @@ class Solving {
                        std::max(kStepAsideMinCount, s.robots.size()));
     if (near.empty()) return false;
     for (const StaticFootprint& f : near) s.stepping_aside.push_back(f.robot);
-    std::vector<int> ids = s.stepping_aside;
     step_asides_.push_back("subproblem " + std::to_string(k) + " (" + idsOf(instance_, s.robots) + ") failed: " +
                            (results_[k] ? failed.reason : std::string("not solved")) + "; solved again with " +
                            std::to_string(near.size()) + " robots of other subproblems free to step aside (" +
-                           idsOf(instance_, ids) + ")");
+                           idsOf(instance_, s.stepping_aside) + ")");
     if (serial_) {
       int fresh = 0;
       for (const auto& o : order_) fresh = std::max(fresh, o.cluster + 1);

@@ -25,7 +25,7 @@ struct RunOutcome {
   std::string reason;
   std::string exception;  // what() of an exception that escaped, if any
   bool success = false;
-  bool deterministic_candidate = false;  // success without merges, complete decomposition and refinement
+  bool deterministic_candidate = false;  // success without merges or step-asides, complete decomposition and refinement
   std::uint64_t plan_hash = 0;
   long long soc = -1;
   double wall_s = 0;
