@@ -83,7 +83,21 @@ class LnsSearch {
                                                     std::to_string(n_) + " robots planned)");
     }
     return failedResult(SolveStatus::Timeout, why + " with " + std::to_string(collidingPairs()) +
-                                                  " colliding pairs of robots left");
+                                                  " colliding pairs of robots left" + somePairs());
+  }
+
+  // " (a & b, c & d, ...)": the first few colliding pairs, to say where the plan is stuck.
+  std::string somePairs() const {
+    std::string out;
+    int shown = 0;
+    for (int a = 0; a < n_ && shown < 3; ++a) {
+      for (int b : partners_[a]) {
+        if (b <= a || shown == 3) continue;
+        out += (shown++ == 0 ? " (" : ", ") + space_.label(a) + " & " + space_.label(b);
+      }
+    }
+    if (shown == 0) return out;
+    return out + (collidingPairs() > shown ? ", ...)" : ")");
   }
 
   // A path for a, around the agents planned so far as soft obstacles; if that search gives up,
