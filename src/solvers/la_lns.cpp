@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <array>
+#include <limits>
 #include <numeric>
 
 #include "fleet_planner/core/random.h"
@@ -35,7 +36,8 @@ class LnsSearch {
         partners_(n_),
         ideal_(n_),
         ideal_absent_(n_, false),
-        escalation_(n_, 1) {
+        escalation_(n_, 1),
+        size_(options.neighborhood_size) {
     weights_.fill(1.0);
   }
 
@@ -201,7 +203,7 @@ class LnsSearch {
   }
 
   std::vector<int> neighborhood(Method method) {
-    const int k = std::min(options_.neighborhood_size, n_);
+    const int k = std::min(size_, n_);
     std::vector<int> colliding;
     for (int a = 0; a < n_; ++a) {
       if (!partners_[a].empty()) colliding.push_back(a);
@@ -299,8 +301,24 @@ class LnsSearch {
     return others;
   }
 
+  // Repairs that have not brought the number of colliding pairs below its lowest so far are stuck
+  // in a local minimum that small neighbourhoods do not leave: after `stall_repairs` of them the
+  // neighbourhood doubles (up to every agent); a new lowest count brings it back to its size.
+  void adaptNeighborhoodSize() {
+    const int pairs = collidingPairs();
+    if (pairs < best_pairs_) {
+      best_pairs_ = pairs;
+      stalled_ = 0;
+      size_ = options_.neighborhood_size;
+    } else if (++stalled_ >= options_.stall_repairs) {
+      size_ = std::min(2 * size_, n_);
+      stalled_ = 0;
+    }
+  }
+
   void repair() {
     ++stats_.high_level_nodes;
+    adaptNeighborhoodSize();
     const Method method = chooseMethod();
     std::vector<int> group = method == kJoint ? knot() : neighborhood(method);
     std::vector<bool> in(n_, false);
@@ -363,6 +381,9 @@ class LnsSearch {
   std::vector<bool> ideal_absent_;  // the search proved there is no such path
   std::vector<int> escalation_;     // per agent: factor of the collision cost
   int planned_ = 0;                 // robots with a path in the first plan so far
+  int size_;                        // agents per neighbourhood now (adaptNeighborhoodSize)
+  int best_pairs_ = std::numeric_limits<int>::max();
+  int stalled_ = 0;                 // repairs since best_pairs_ was reached
   std::array<double, kMethods> weights_;
 };
 

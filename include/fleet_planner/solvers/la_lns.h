@@ -10,8 +10,11 @@
 /// new paths are kept when the number of colliding agent pairs does not grow. Neighbourhoods come
 /// from the collision graph (a colliding agent and its partners, widened by a random walk), from
 /// the agents in the way of a colliding agent's ideal path, or at random among colliding agents,
-/// chosen adaptively by how much each has helped (adaptive LNS). A fourth kind of step replans a
-/// colliding agent and up to two of its partners together by LA-CBS around everybody else
+/// chosen adaptively by how much each has helped (adaptive LNS). When repairs stop lowering the
+/// number of colliding pairs, the neighbourhood doubles until one does; at the size of the
+/// subproblem every agent is replanned, colliding or not: a knot of a few pairs in a packed level
+/// may need all of its robots to move differently. A fourth kind of step replans a colliding
+/// agent and up to two of its partners together by LA-CBS around everybody else
 /// (joint_repair.h), for the knots that one-by-one replanning cannot untie.
 ///
 /// Beyond the paper's backends. Serial: static footprints and the timed paths of other
@@ -22,8 +25,11 @@
 namespace fleet_planner {
 
 struct LaLnsOptions {
-  /// Agents replanned together in one repair step.
+  /// Agents replanned together in one repair step, at first.
   int neighborhood_size = 8;
+  /// Repairs without a new lowest number of colliding pairs after which the neighbourhood
+  /// doubles (up to every agent of the subproblem).
+  int stall_repairs = 20;
   /// Cost of one colliding step in the low level, in steps of path length.
   int collision_cost = 16;
   /// Expansions of one low-level search before it gives up.
