@@ -167,5 +167,63 @@ TEST(LaLns, AvoidsMovingObstacleThatParksOnItsRoute) {
   EXPECT_TRUE(v.valid()) << v.violation.message;
 }
 
+// Two robots trading ends of a corridor with no pocket: no plan exists, and the repair stops at
+// its expansion budget right after the first plan. Its draft still leads every robot from its
+// start to its target, for a retry to continue from.
+TEST(LaLns, TimeoutLeavesADraftFromStartsToTargets) {
+  const World w(freeMap(5, 1), {dot("a", {0, 0, 0}, {4, 0, 0}), dot("b", {4, 0, 1}, {0, 0, 1})});
+  Subproblem sub = allRobots(w);
+  sub.max_expansions = 1;
+  const Outcome o = solveWith("la_lns", w, sub);
+  ASSERT_EQ(o.result.status, SolveStatus::Timeout) << describe(o);
+  ASSERT_EQ(o.result.draft.size(), 2u);
+  for (int a = 0; a < 2; ++a) {
+    const Robot& r = w.instance.robots[a];
+    ASSERT_FALSE(o.result.draft[a].empty());
+    EXPECT_EQ(o.result.draft[a].front(), r.start) << r.id;
+    EXPECT_EQ(o.result.draft[a].back(), r.target) << r.id;
+  }
+}
+
+// A conflict-free hint that is longer than needed (a waits three steps) is where the repair
+// starts, so it comes back unchanged; without the hint, a drives straight.
+TEST(LaLns, StartsFromAFittingHint) {
+  const World w(freeMap(5, 2), {dot("a", {0, 0, 0}, {4, 0, 0}), dot("b", {0, 1, 0}, {4, 1, 0})});
+  const Path slow{{0, 0, 0}, {0, 0, 0}, {0, 0, 0}, {0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {3, 0, 0}, {4, 0, 0}};
+  Subproblem sub = allRobots(w);
+  sub.initial_paths = {slow};
+  const Outcome hinted = solveWith("la_lns", w, sub);
+  ASSERT_TRUE(solvedValidly(hinted)) << describe(hinted);
+  EXPECT_EQ(hinted.result.paths[0], slow);
+  const Outcome plain = solveWith("la_lns", w, allRobots(w));
+  ASSERT_TRUE(solvedValidly(plain)) << describe(plain);
+  EXPECT_EQ(plain.result.paths[0].size(), 5u);
+}
+
+// Hints that do not fit are ignored: one that jumps a cell, one that ends off the target, and
+// any hint of a subproblem with moving obstacles (the repair's table does not hold them).
+TEST(LaLns, IgnoresHintsThatDoNotFit) {
+  const World w(freeMap(5, 2), {dot("a", {0, 0, 0}, {4, 0, 0}), dot("b", {0, 1, 0}, {4, 1, 0})});
+  const Path jumping{{0, 0, 0}, {0, 0, 0}, {2, 0, 0}, {3, 0, 0}, {4, 0, 0}};
+  const Path short_of_target{{0, 0, 0}, {0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {3, 0, 0}};
+  const Path straight{{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {3, 0, 0}, {4, 0, 0}};
+  for (const Path& hint : {jumping, short_of_target}) {
+    Subproblem sub = allRobots(w);
+    sub.initial_paths = {hint};
+    const Outcome o = solveWith("la_lns", w, sub);
+    ASSERT_TRUE(solvedValidly(o)) << describe(o);
+    EXPECT_EQ(o.result.paths[0], straight);
+  }
+  const World x(freeMap(5, 3), {dot("a", {0, 0, 0}, {4, 0, 0}), dot("m", {0, 2, 0}, {0, 2, 0})});
+  const Path slow{{0, 0, 0}, {0, 0, 0}, {0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {3, 0, 0}, {4, 0, 0}};
+  Subproblem sub = allRobots(x);
+  sub.robots = {0};
+  sub.moving = {{1, {{0, 2, 0}}}};
+  sub.initial_paths = {slow};
+  const Outcome o = solveWith("la_lns", x, sub);
+  ASSERT_TRUE(solvedValidly(o)) << describe(o);
+  EXPECT_EQ(o.result.paths[0], straight);
+}
+
 }  // namespace
 }  // namespace fleet_planner::test
