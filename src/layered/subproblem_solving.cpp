@@ -3,7 +3,6 @@
 
 #include <algorithm>
 #include <atomic>
-#include <map>
 #include <optional>
 #include <set>
 #include <thread>
@@ -163,11 +162,6 @@ class Solving {
     sub.seed = options_.seed + order_[k].seed_offset;
     const std::vector<int>& aside = order_[k].stepping_aside;
     sub.robots.insert(sub.robots.end(), aside.begin(), aside.end());
-    // A retry continues from the paths of the attempts before it, where there are any.
-    for (int r : sub.robots) {
-      const auto hint = hints_.find(r);
-      sub.initial_paths.push_back(hint == hints_.end() ? Path{} : hint->second);
-    }
     for (std::size_t m = 0; m < order_.size(); ++m) {
       if (m == k) continue;
       // A serial backend plans around its own cluster's earlier levels as they move.
@@ -280,7 +274,6 @@ class Solving {
                            (results_[k] ? failed.reason : std::string("not solved")) + "; solved again with " +
                            std::to_string(near.size()) + " robots of other subproblems free to step aside (" +
                            idsOf(instance_, s.stepping_aside) + ")");
-    keepAsHints(k);
     if (serial_) {
       int fresh = 0;
       for (const auto& o : order_) fresh = std::max(fresh, o.cluster + 1);
@@ -290,17 +283,6 @@ class Solving {
     }
     results_[k].reset();
     return true;
-  }
-
-  // Subproblem k's last paths (its plan, or a timed-out repair's draft) as hints for its robots'
-  // next attempt (Subproblem::initial_paths); the paths of robots stepping aside for it are not
-  // their own way.
-  void keepAsHints(std::size_t k) {
-    if (!results_[k]) return;
-    const std::vector<Path>& paths = results_[k]->success() ? results_[k]->paths : results_[k]->draft;
-    const std::vector<int>& robots = order_[k].robots;
-    if (paths.size() < robots.size()) return;
-    for (std::size_t a = 0; a < robots.size(); ++a) hints_[robots[a]] = paths[a];
   }
 
   // Safeguard: merge subproblem k with the next one (or, for the last, with the one before);
@@ -314,8 +296,6 @@ class Solving {
                       std::to_string(failed.stats.high_level_nodes) + " high-level nodes, " +
                       std::to_string(failed.stats.low_level_expansions) + " expansions); merged with subproblem " +
                       std::to_string(other));
-    keepAsHints(first);
-    keepAsHints(first + 1);
     const int keep = order_[first].cluster, gone = order_[first + 1].cluster;
     for (auto& s : order_) {
       if (s.cluster == gone) s.cluster = keep;
@@ -374,7 +354,6 @@ class Solving {
   std::vector<std::string> merges_;
   std::vector<std::string> step_asides_;
   std::set<std::pair<int, int>> tried_pairs_;
-  std::map<int, Path> hints_;  // robot -> where its last attempt left it (keepAsHints)
   int pending_robots_ = 0;
 };
 

@@ -48,17 +48,7 @@ class LnsSearch {
     std::stable_sort(order.begin(), order.end(), [&](int x, int y) {
       return space_.distance(x, space_.start(x)) > space_.distance(y, space_.start(y));
     });
-    // Hinted paths first (a retry continuing an earlier attempt), then the others around them.
-    std::vector<bool> hinted(n_, false);
-    for (int a = 0; a < n_; ++a) {
-      StatePath path = hint(a);
-      if (path.empty()) continue;
-      table_.insert(a, path);
-      hinted[a] = true;
-      ++planned_;
-    }
     for (int a : order) {
-      if (hinted[a]) continue;
       StatePath path;
       if (std::optional<SolveResult> stop = initialPath(a, path)) return *stop;
       table_.insert(a, path);
@@ -94,39 +84,8 @@ class LnsSearch {
                                                     std::to_string(planned_) + " of " +
                                                     std::to_string(n_) + " robots planned)");
     }
-    SolveResult r = failedResult(SolveStatus::Timeout, why + " with " + std::to_string(collidingPairs()) +
-                                                           " colliding pairs of robots left" + somePairs());
-    std::vector<StatePath> paths(n_);
-    for (int a = 0; a < n_; ++a) paths[a] = table_.path(a);
-    r.draft = toPosePaths(space_, paths);
-    return r;
-  }
-
-  // Agent a's entry of Subproblem::initial_paths as states, or empty if there is none or it is
-  // not a way from a's start to its target that the graph and the blocked footprints allow.
-  // Hints are ignored around moving obstacles, which the table does not hold.
-  StatePath hint(int a) const {
-    const std::vector<Path>& hints = problem_.initial_paths;
-    if (!problem_.moving.empty() || a >= static_cast<int>(hints.size()) || hints[a].empty()) return {};
-    const StateGraph& g = space_.graph(a);
-    StatePath path;
-    for (const GridPose& p : hints[a]) {
-      const StateId s = g.id(p);
-      if (s == kNoState || !g.valid(s)) return {};
-      if (!path.empty() && !allowsStep(a, path.back(), s)) return {};
-      path.push_back(s);
-    }
-    if (path.front() != space_.start(a) || path.back() != space_.target(a)) return {};
-    return path;
-  }
-
-  bool allowsStep(int a, StateId from, StateId to) const {
-    if (from == to) return space_.allows(a, from, Action::Wait);
-    bool ok = false;
-    space_.graph(a).forEachSuccessor(from, [&](Action action, StateId next) {
-      ok = ok || (next == to && space_.allows(a, from, action));
-    });
-    return ok;
+    return failedResult(SolveStatus::Timeout, why + " with " + std::to_string(collidingPairs()) +
+                                                  " colliding pairs of robots left" + somePairs());
   }
 
   // " (a & b, c & d, ...)": the first few colliding pairs, to say where the plan is stuck.

@@ -9,7 +9,6 @@
 #include "fleet_planner/layered/plan_merge.h"
 #include "fleet_planner/layered/step_aside.h"
 #include "fleet_planner/layered_planner.h"
-#include "fleet_planner/solvers/registry.h"
 #include "test_maps.h"
 #include "test_robots.h"
 
@@ -108,69 +107,6 @@ TEST(PlanMerge, ARobotWithAPathContinuesItAfterItsEnd) {
   plan.paths = merged;
   const ValidationResult v = validatePlan(map, in, plan);
   EXPECT_TRUE(v.valid()) << v.violation.message;
-}
-
-// A test-only backend: on a subproblem with the robot "slow", a first attempt without a hint for
-// it times out with a draft in which "slow" waits two steps; an attempt with a hint records the
-// hints and returns them as its plan (robots without one stay where they start). Everything else
-// is LA-LaCAM.
-std::vector<Path>& receivedHints() {
-  static std::vector<Path> hints;
-  return hints;
-}
-
-class Drafting : public Solver {
- public:
-  std::string name() const override { return "drafting_test_backend"; }
-  bool avoidsMovingObstacles() const override { return false; }
-  SolveResult solve(const Subproblem& p) override {
-    const auto slow = std::find_if(p.robots.begin(), p.robots.end(),
-                                   [&](int r) { return p.instance->robots[r].id == "slow"; });
-    if (slow == p.robots.end()) return makeSolver("la_lacam")->solve(p);
-    const std::size_t k = static_cast<std::size_t>(slow - p.robots.begin());
-    SolveResult r;
-    if (k < p.initial_paths.size() && !p.initial_paths[k].empty()) {
-      receivedHints() = p.initial_paths;
-      for (std::size_t a = 0; a < p.robots.size(); ++a) {
-        const bool hinted = a < p.initial_paths.size() && !p.initial_paths[a].empty();
-        r.paths.push_back(hinted ? p.initial_paths[a] : Path{p.instance->robots[p.robots[a]].start});
-      }
-      r.status = SolveStatus::Success;
-      return r;
-    }
-    r = makeSolver("la_lacam")->solve(p);
-    r.draft = r.paths;
-    r.draft[k].insert(r.draft[k].begin(), 2, r.draft[k].front());
-    r.paths.clear();
-    r.status = SolveStatus::Timeout;
-    r.reason = "draft only";
-    return r;
-  }
-};
-const bool kDrafting = registerSolver("drafting_test_backend", [] { return std::make_unique<Drafting>(); });
-
-// The safeguard's retry with the robots nearby stepping aside starts from the failed attempt's
-// draft: the backend gets it as the hint for that robot (and so needs no merge).
-TEST(Safeguard, RetryStartsFromTheFailedAttemptsDraft) {
-  ASSERT_TRUE(kDrafting);
-  const GridMap map = test::freeMap(12, 6);
-  Instance in;
-  in.robots = {dot("a", {0, 0, 0}, {11, 0, 0}), dot("slow", {0, 3, 0}, {11, 3, 0}), dot("c", {0, 5, 0}, {11, 5, 0})};
-  const FleetGraphs graphs(map, footprintsOf(in));
-  LayeredOptions o;
-  o.backend = "drafting_test_backend";
-  receivedHints().clear();
-  const LayeredResult r = planLayered(map, in, graphs, o, Deadline::in(5.0));
-  ASSERT_TRUE(r.success()) << r.reason;
-  EXPECT_TRUE(validatePlan(map, in, r.plan).valid());
-  ASSERT_EQ(r.step_asides.size(), 1u);
-  EXPECT_TRUE(r.merges.empty()) << "the retry with robots stepping aside got no draft: " << r.merges.front();
-  ASSERT_FALSE(receivedHints().empty());
-  const Path& hint = receivedHints()[0];
-  ASSERT_GE(hint.size(), 3u);
-  EXPECT_EQ(hint[0], in.robots[1].start);
-  EXPECT_EQ(hint[2], in.robots[1].start) << "not the draft: it waits two steps at the start";
-  EXPECT_EQ(hint.back(), in.robots[1].target);
 }
 
 }  // namespace

@@ -22,9 +22,7 @@
 /// its robots' ways free to step aside and come back (step_aside.h); if that fails too, it is
 /// merged with its neighbour (the next one, or for the last
 /// the one before; their clusters become one) and the units it touched are solved again;
-/// every merge is reported. A retry starts from where the attempts before it left its robots
-/// (Subproblem::initial_paths: a timed-out repair's draft, or a merged neighbour's plan), for the
-/// backends that can use that. With a fallback backend, a subproblem that the backend fails within
+/// every merge is reported. With a fallback backend, a subproblem that the backend fails within
 /// the first part of its time share is tried with the fallback in the rest before that. Each
 /// subproblem's seed is the planner's seed plus its first position in the decomposition, so
 /// results do not depend on the threads.

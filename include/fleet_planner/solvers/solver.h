@@ -45,12 +45,6 @@ struct Subproblem {
   /// Backends that count expansions honour it; unlike a deadline, it gives the same outcome on
   /// every machine.
   long long max_expansions = -1;
-  /// Optional starting point for backends that repair a plan (LA-LNS; the others ignore it): a
-  /// path per entry of `robots`, same order; a missing or empty entry is no hint. The paths may
-  /// collide with each other. A hint that does not lead from the robot's start (or returning
-  /// pose) to its target through moves its graph and the blocked footprints allow is ignored,
-  /// and so are all hints of a subproblem with moving obstacles.
-  std::vector<Path> initial_paths;
 };
 
 /// ResourceLimit: the deadline's memory guard tripped, or a search's tables would not fit in
@@ -71,10 +65,6 @@ struct SolveResult {
   SolveStatus status = SolveStatus::InvalidInput;
   std::string reason;       ///< human-readable, names the robot where one is to blame
   std::vector<Path> paths;  ///< on success: one per Subproblem::robots entry, same order
-  /// On a timeout of a repairing backend (LA-LNS) after its first plan: its last paths, one per
-  /// Subproblem::robots entry, which still collide. A retry may start from them
-  /// (Subproblem::initial_paths).
-  std::vector<Path> draft;
   SolveStats stats;
   bool success() const { return status == SolveStatus::Success; }
 };
