@@ -58,7 +58,7 @@ std::pair<std::vector<int>, std::vector<int>> bipartition(DependencyOracle& orac
     for (int j : *on_path) {
       Mask avoid(n, 0);
       avoid[j] = 1;
-      if (!oracle.agents(i, in_c, avoid)) {
+      if (!oracle.agentPathExists(i, in_c, avoid)) {
         adjacent[i].push_back(j);
         adjacent[j].push_back(i);
       }
@@ -80,7 +80,7 @@ std::pair<std::vector<int>, std::vector<int>> bipartition(DependencyOracle& orac
     for (bool moved = true; moved;) {
       moved = false;
       for (int i : members(remain)) {
-        if (!oracle.agents(i, remain, major)) {
+        if (!oracle.agentPathExists(i, remain, major)) {
           move(i);
           moved = true;
         }
@@ -90,7 +90,7 @@ std::pair<std::vector<int>, std::vector<int>> bipartition(DependencyOracle& orac
     for (bool moved = true; moved;) {
       moved = false;
       for (int i : members(major)) {
-        if (oracle.agents(i, major, remain)) continue;
+        if (oracle.agentPathExists(i, major, remain)) continue;
         const auto needed = oracle.agents(i, in_c, {});
         if (!needed) throw InvalidInput("decomposition: a robot lost its path inside its own cluster");
         for (int j : *needed) {
@@ -105,8 +105,8 @@ std::pair<std::vector<int>, std::vector<int>> bipartition(DependencyOracle& orac
     const std::vector<int> rest = members(remain);
     if (rest.empty()) break;
     bool independent = true;
-    for (int i : rest) independent = independent && oracle.agents(i, remain, major).has_value();
-    for (int i : members(major)) independent = independent && oracle.agents(i, major, remain).has_value();
+    for (int i : rest) independent = independent && oracle.agentPathExists(i, remain, major);
+    for (int i : members(major)) independent = independent && oracle.agentPathExists(i, major, remain);
     if (independent) break;
   }
   return {members(major), members(remain)};

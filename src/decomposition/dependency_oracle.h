@@ -41,6 +41,24 @@ class DependencyOracle {
     return query(i, f);
   }
 
+  /// Whether agents(i, avail, avoid) would find a path (a cheaper search that ranks no paths).
+  bool agentPathExists(int i, const Mask& avail, const Mask& avoid) {
+    SatFilter f;
+    if (!avail.empty()) f.allowed = satsOf(avail);
+    if (!avoid.empty()) f.avoided = satsOf(avoid);
+    ++queries_;
+    return pathExists(graphs_[i], f);
+  }
+
+  /// Whether sats(i, avail, avoid) would find a path.
+  bool satPathExists(int i, const Mask& avail, const Mask& avoid) {
+    SatFilter f;
+    f.allowed = avail;
+    f.avoided = avoid;
+    ++queries_;
+    return pathExists(graphs_[i], f);
+  }
+
   long long queries() const { return queries_; }
 
  private:

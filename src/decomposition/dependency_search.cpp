@@ -7,17 +7,47 @@
 
 namespace fleet_planner {
 
+namespace {
+
+// Every SAT of component c passes the filter, the robot's own start and target aside.
+bool passable(const RelationGraph& r, const SatFilter& filter, int c) {
+  const ComponentGraph& g = *r.graph;
+  for (int k = g.sat_begin[c]; k < g.sat_begin[c + 1]; ++k) {
+    const int s = g.sats[k];
+    if (s / 2 != r.robot && !filter.passes(s)) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+bool pathExists(const RelationGraph& r, const SatFilter& filter) {
+  if (r.start < 0 || r.target < 0 || !passable(r, filter, r.start) || !passable(r, filter, r.target)) return false;
+  if (r.start == r.target) return true;
+  const ComponentGraph& g = *r.graph;
+  // Depth-first; a component is judged once, when first reached.
+  std::vector<char> seen(static_cast<std::size_t>(g.numComponents()), 0);
+  std::vector<int> stack{r.start};
+  seen[r.start] = 1;
+  while (!stack.empty()) {
+    const int c = stack.back();
+    stack.pop_back();
+    for (int k = g.edge_begin[c]; k < g.edge_begin[c + 1]; ++k) {
+      const int next = g.edges[k];
+      if (seen[next]) continue;
+      seen[next] = 1;
+      if (!passable(r, filter, next)) continue;
+      if (next == r.target) return true;
+      stack.push_back(next);
+    }
+  }
+  return false;
+}
+
 std::optional<std::vector<int>> searchPathSats(const RelationGraph& r, const SatFilter& filter) {
   const ComponentGraph& g = *r.graph;
   const int n = g.numComponents();
-  const int own_start = 2 * r.robot, own_target = 2 * r.robot + 1;  // the robot's own SATs: ignored
-  auto passable = [&](int c) {
-    for (int k = g.sat_begin[c]; k < g.sat_begin[c + 1]; ++k) {
-      const int s = g.sats[k];
-      if (s != own_start && s != own_target && !filter.passes(s)) return false;
-    }
-    return true;
-  };
+  auto passable = [&](int c) { return fleet_planner::passable(r, filter, c); };
   auto cost = [&](int c) {
     int k = 0;
     for (int i = g.sat_begin[c]; i < g.sat_begin[c + 1]; ++i) k += g.sats[i] / 2 != r.robot;

@@ -117,7 +117,7 @@ class LevelSplitter {
       for (bool moved = true; moved;) {
         moved = false;
         for (int i : members(remain)) {
-          if (!oracle_.sats(i, avail_, with(base, targetsOf(major)))) {
+          if (!oracle_.satPathExists(i, avail_, with(base, targetsOf(major)))) {
             move(i, major, remain);
             moved = true;
           }
@@ -127,7 +127,7 @@ class LevelSplitter {
       for (bool moved = true; moved;) {
         moved = false;
         for (int i : members(major)) {
-          if (oracle_.sats(i, avail_, with(base, startsOf(remain)))) continue;
+          if (oracle_.satPathExists(i, avail_, with(base, startsOf(remain)))) continue;
           const auto needed = oracle_.sats(i, avail_, base);
           for (int j : members(remain)) {
             // Without a path at all (cannot happen for a legal input), take everything.
@@ -141,8 +141,8 @@ class LevelSplitter {
       // Step 4: done when both are independent levels.
       if (members(remain).empty()) break;
       bool independent = true;
-      for (int i : members(remain)) independent = independent && oracle_.sats(i, avail_, with(base, targetsOf(major))).has_value();
-      for (int i : members(major)) independent = independent && oracle_.sats(i, avail_, with(base, startsOf(remain))).has_value();
+      for (int i : members(remain)) independent = independent && oracle_.satPathExists(i, avail_, with(base, targetsOf(major)));
+      for (int i : members(major)) independent = independent && oracle_.satPathExists(i, avail_, with(base, startsOf(remain)));
       if (independent) break;
     }
     return {members(major), members(remain)};
@@ -159,7 +159,7 @@ class LevelSplitter {
   bool pathAvoiding(int i, const Mask& base, std::initializer_list<int> extra) {
     Mask avoid = base;
     for (int s : extra) avoid[s] = 1;
-    return oracle_.sats(i, avail_, avoid).has_value();
+    return oracle_.satPathExists(i, avail_, avoid);
   }
   Mask satMask(const Mask& robots, int which) const {
     Mask m(2 * n_, 0);
@@ -237,17 +237,17 @@ std::vector<std::vector<int>> bipartitionLevels(DependencyOracle& oracle, const 
           Mask avoid = base;
           avoid[sat] = 1;
           for (int j : rest) {
-            if (j != i && !oracle.sats(j, splitter.avail(), avoid)) return false;
+            if (j != i && !oracle.satPathExists(j, splitter.avail(), avoid)) return false;
           }
           return true;
         };
         Mask rest_but_i = others;
         rest_but_i[i] = 0;
-        if (oracle.sats(i, splitter.avail(), LevelSplitter::with(base, splitter.startsOf(rest_but_i))) &&
+        if (oracle.satPathExists(i, splitter.avail(), LevelSplitter::with(base, splitter.startsOf(rest_but_i))) &&
             othersKeepClearOf(2 * i + 1)) {
           out.push_back({i});  // first: clear of every start still waiting; the others of its target
           earlier[i] = 1;
-        } else if (oracle.sats(i, splitter.avail(), LevelSplitter::with(base, splitter.targetsOf(rest_but_i))) &&
+        } else if (oracle.satPathExists(i, splitter.avail(), LevelSplitter::with(base, splitter.targetsOf(rest_but_i))) &&
                    othersKeepClearOf(2 * i)) {
           tail.push_back({i});  // last: clear of every target reached before it; the others of its start
           later[i] = 1;

@@ -14,6 +14,7 @@
 // are the only ones.
 #include "fleet_planner/decomposition/decomposition.h"
 #include "fleet_planner/decomposition/relation_graph.h"
+#include "fleet_planner/decomposition/dependency_search.h"
 
 #include <gtest/gtest.h>
 
@@ -376,6 +377,49 @@ bool refines(const Decomposition& fine, const Decomposition& coarse, int n) {
     }
   }
   return true;
+}
+
+// pathExists answers the existence queries of the decomposition: it must agree with the ranked
+// search on whether a path exists, for any filter.
+TEST(DependencySearch, PathExistsAgreesWithTheRankedSearch) {
+  int found = 0, none = 0;
+  for (std::uint64_t seed = 0; seed < 200; ++seed) {
+    const GridMap map = randomMap(seed);
+    GeneratorOptions options;
+    options.seed = seed;
+    options.robots = 2 + static_cast<int>(seed % 7);
+    options.max_size = 1.0;
+    options.attempts_per_robot = 500;
+    Instance instance;
+    try {
+      instance = generateInstance(map, options);
+    } catch (const InvalidInput&) {
+      continue;
+    }
+    const FleetGraphs graphs(map, footprintsOf(instance));
+    const std::vector<RelationGraph> relations = buildRelationGraphs(instance, graphs, 1, Deadline::in(60));
+    const int sats = 2 * static_cast<int>(instance.robots.size());
+    Rng rng(seed);
+    for (const RelationGraph& r : relations) {
+      for (int round = 0; round < 20; ++round) {
+        SatFilter f;
+        // Empty masks (no restriction) now and then; otherwise random ones.
+        if (round % 4 != 0) {
+          f.allowed.resize(sats);
+          for (char& a : f.allowed) a = rng.uniform01() < 0.8;
+        }
+        if (round % 3 != 0) {
+          f.avoided.resize(sats);
+          for (char& a : f.avoided) a = rng.uniform01() < 0.3;
+        }
+        const bool ranked = searchPathSats(r, f).has_value();
+        ASSERT_EQ(pathExists(r, f), ranked) << "seed " << seed << ", robot " << r.robot << ", round " << round;
+        (ranked ? found : none) += 1;
+      }
+    }
+  }
+  EXPECT_GT(found, 1000);
+  EXPECT_GT(none, 1000);
 }
 
 TEST(Decomposition, RandomInstancesLegalDeterministicAndPareto) {

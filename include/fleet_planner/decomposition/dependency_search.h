@@ -26,4 +26,8 @@ struct SatFilter {
 /// no such path exists.
 std::optional<std::vector<int>> searchPathSats(const RelationGraph& graph, const SatFilter& filter);
 
+/// Whether searchPathSats would find a path (`has_value()`), without ranking paths: a plain
+/// graph search, for the queries that only ask whether a robot can avoid some SATs.
+bool pathExists(const RelationGraph& graph, const SatFilter& filter);
+
 }  // namespace fleet_planner
