@@ -4,7 +4,6 @@
 #include <cmath>
 #include <cstdint>
 #include <memory>
-#include <set>
 #include <unordered_map>
 
 #include "fleet_planner/core/collision.h"
@@ -18,17 +17,34 @@ using path_steps::radiusOf;
 
 namespace {
 
-// The steps of a path before its end, bucketed by the cell they start from, with their actions:
-// the steps of another robot that can meet a step at p are those in the buckets around p.
+// The steps of a path before its end, bucketed by the cell they start from, as runs: a wait that
+// lasts many steps (a delayed start, a robot waiting for another) is one run, since every step of
+// it sweeps the same cells. The runs of another robot that can meet a step at p are those in the
+// buckets around p.
 class StepIndex {
  public:
+  struct Run {
+    int first, last;  // steps first..last, all from the same pose with the same action
+  };
+
   StepIndex(const Path& p, const ActionModel& model, int bucket) : path_(p), bucket_(bucket) {
-    for (int t = 0; t < static_cast<int>(p.size()); ++t) actions_.push_back(path_steps::actionAt(p, t, model));
-    for (int t = 0; t + 1 < static_cast<int>(p.size()); ++t) buckets_[key(p[t].x / bucket_, p[t].y / bucket_)].push_back(t);
+    const int steps = static_cast<int>(p.size()) - 1;
+    for (int t = 0; t < steps;) {
+      const Action action = path_steps::actionAt(p, t, model);
+      int last = t;
+      if (action == Action::Wait && p[t + 1] == p[t]) {
+        while (last + 1 < steps && p[last + 2] == p[t]) ++last;
+      }
+      runs_.push_back({t, last});
+      actions_.push_back(action);
+      buckets_[key(p[t].x / bucket_, p[t].y / bucket_)].push_back(static_cast<int>(runs_.size()) - 1);
+      t = last + 1;
+    }
   }
-  const GridPose& pose(int t) const { return path_[t]; }
-  Action action(int t) const { return actions_[t]; }
-  /// Calls f(t) for every indexed step starting within one bucket of (x, y), in no set order.
+  const std::vector<Run>& runs() const { return runs_; }
+  const GridPose& pose(int run) const { return path_[runs_[run].first]; }
+  Action action(int run) const { return actions_[run]; }
+  /// Calls f(run) for every run starting within one bucket of (x, y), in no set order.
   template <class F>
   void near(int x, int y, F&& f) const {
     const int bx = x / bucket_, by = y / bucket_;
@@ -36,7 +52,7 @@ class StepIndex {
       for (int dx = -1; dx <= 1; ++dx) {
         const auto it = buckets_.find(key(bx + dx, by + dy));
         if (it == buckets_.end()) continue;
-        for (int t : it->second) f(t);
+        for (int r : it->second) f(r);
       }
     }
   }
@@ -47,6 +63,7 @@ class StepIndex {
   }
   const Path& path_;
   int bucket_;
+  std::vector<Run> runs_;
   std::vector<Action> actions_;
   std::unordered_map<std::uint64_t, std::vector<int>> buckets_;
 };
@@ -66,8 +83,12 @@ int delayToFit(const FleetGraphs& graphs, const std::vector<Path>& merged, const
   }
   const int bucket = 2 * radius + 2;
   std::vector<std::unique_ptr<StepIndex>> index(merged.size());
-  std::set<int> forbidden;
-  int above = -1;  // every delay <= above is forbidden
+  std::vector<Box> boxes(merged.size());
+  for (int m = 0; m < static_cast<int>(merged.size()); ++m) {
+    if (done[m]) boxes[m] = boxOf(graphs.cells(m), merged[m]);
+  }
+  std::vector<std::pair<int, int>> forbidden;  // delay intervals [lo, hi]
+  int above = -1;                              // every delay <= above is forbidden
   for (std::size_t k = 0; k < robots.size(); ++k) {
     // A robot with a path so far continues it: the new part starts once it has ended.
     if (done[robots[k]]) above = std::max(above, static_cast<int>(merged[robots[k]].size()) - 2);
@@ -79,27 +100,36 @@ int delayToFit(const FleetGraphs& graphs, const std::vector<Path>& merged, const
     const StepIndex steps_a(a, model, bucket);
     const int la = static_cast<int>(a.size()) - 1;  // a's last step; then parked
     for (int m = 0; m < static_cast<int>(merged.size()); ++m) {
-      if (!done[m] || m == robots[k] || !box_a.meets(boxOf(graphs.cells(m), merged[m]))) continue;
+      if (!done[m] || m == robots[k] || !box_a.meets(boxes[m])) continue;
       if (!index[m]) index[m] = std::make_unique<StepIndex>(merged[m], model, bucket);
       const StepIndex& b = *index[m];
       const FootprintCells& B = graphs.cells(m);
-      // a's moving steps against b's moving steps. (b parked for good cannot meet a's step when
-      // b's target was blocked for a, and no delay would fix it; the caller's validation of the
-      // merged plan would report it.)
-      for (int ta = 0; ta < la; ++ta) {
-        const GridPose& pa = a[ta];
-        b.near(pa.x, pa.y, [&](int tb) {
-          if (tb >= ta && sweepsOverlap(A, pa, steps_a.action(ta), B, b.pose(tb), b.action(tb))) forbidden.insert(tb - ta);
+      // a's moving steps against b's moving steps: a's steps sa.first..sa.last and b's
+      // sb.first..sb.last forbid the delays tb - ta >= 0 between them. (b parked for good cannot
+      // meet a's step when b's target was blocked for a, and no delay would fix it; the caller's
+      // validation of the merged plan would report it.)
+      for (int ra = 0; ra < static_cast<int>(steps_a.runs().size()); ++ra) {
+        const StepIndex::Run sa = steps_a.runs()[ra];
+        const GridPose& pa = steps_a.pose(ra);
+        b.near(pa.x, pa.y, [&](int rb) {
+          const StepIndex::Run sb = b.runs()[rb];
+          if (sb.last < sa.first) return;
+          if (sweepsOverlap(A, pa, steps_a.action(ra), B, b.pose(rb), b.action(rb)))
+            forbidden.push_back({std::max(0, sb.first - sa.last), sb.last - sa.first});
         });
       }
       // a parked (from time la + d on) against b's step tb: forbidden when la + d <= tb.
-      b.near(a[la].x, a[la].y, [&](int tb) {
-        if (tb - la > above && sweepsOverlap(A, a[la], Action::Wait, B, b.pose(tb), b.action(tb))) above = tb - la;
+      b.near(a[la].x, a[la].y, [&](int rb) {
+        const int last = b.runs()[rb].last;
+        if (last - la > above && sweepsOverlap(A, a[la], Action::Wait, B, b.pose(rb), b.action(rb))) above = last - la;
       });
     }
   }
   int d = std::max(0, above + 1);
-  while (forbidden.count(d)) ++d;
+  std::sort(forbidden.begin(), forbidden.end());
+  for (const auto& [lo, hi] : forbidden) {
+    if (lo <= d && d <= hi) d = hi + 1;
+  }
   for (Path& p : fresh) p.insert(p.begin(), static_cast<std::size_t>(d), p.front());
   return d;
 }
