@@ -22,6 +22,7 @@
 #include <chrono>
 #include <cstdint>
 #include <iostream>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <string>
@@ -352,6 +353,20 @@ GridMap randomMap(std::uint64_t seed) {
   return GridMap(width, height, cells);
 }
 
+// 2-8 robots of up to 3 x 3 cells on `map`; none if the generator cannot place them.
+std::optional<Instance> randomInstance(const GridMap& map, std::uint64_t seed) {
+  GeneratorOptions options;
+  options.seed = seed;
+  options.robots = 2 + static_cast<int>(seed % 7);
+  options.max_size = 1.0;
+  options.attempts_per_robot = 500;
+  try {
+    return generateInstance(map, options);
+  } catch (const InvalidInput&) {
+    return std::nullopt;
+  }
+}
+
 bool sameSubproblems(const Decomposition& a, const Decomposition& b) {
   if (a.subproblems.size() != b.subproblems.size()) return false;
   for (std::size_t k = 0; k < a.subproblems.size(); ++k) {
@@ -385,17 +400,9 @@ TEST(DependencySearch, PathExistsAgreesWithTheRankedSearch) {
   int found = 0, none = 0;
   for (std::uint64_t seed = 0; seed < 200; ++seed) {
     const GridMap map = randomMap(seed);
-    GeneratorOptions options;
-    options.seed = seed;
-    options.robots = 2 + static_cast<int>(seed % 7);
-    options.max_size = 1.0;
-    options.attempts_per_robot = 500;
-    Instance instance;
-    try {
-      instance = generateInstance(map, options);
-    } catch (const InvalidInput&) {
-      continue;
-    }
+    const std::optional<Instance> made = randomInstance(map, seed);
+    if (!made) continue;
+    const Instance& instance = *made;
     const FleetGraphs graphs(map, footprintsOf(instance));
     const std::vector<RelationGraph> relations = buildRelationGraphs(instance, graphs, 1, Deadline::in(60));
     const int sats = 2 * static_cast<int>(instance.robots.size());
@@ -430,18 +437,12 @@ TEST(Decomposition, RandomInstancesLegalDeterministicAndPareto) {
   std::uint64_t seed = 0;
   for (; made < kInstances && seed < 3 * kInstances; ++seed) {
     const GridMap map = randomMap(seed);
-    GeneratorOptions options;
-    options.seed = seed;
-    options.robots = 2 + static_cast<int>(seed % 7);
-    options.max_size = 1.0;
-    options.attempts_per_robot = 500;
-    Instance instance;
-    try {
-      instance = generateInstance(map, options);
-    } catch (const InvalidInput&) {
+    const std::optional<Instance> generated = randomInstance(map, seed);
+    if (!generated) {
       ++skipped;
       continue;
     }
+    const Instance& instance = *generated;
     ++made;
     const int n = static_cast<int>(instance.robots.size());
     const FleetGraphs graphs(map, footprintsOf(instance));
