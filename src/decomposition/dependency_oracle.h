@@ -20,10 +20,7 @@ class DependencyOracle {
   /// search_path_agent: the robots robot i's path is related to, through components related only
   /// to robots in `avail` (empty mask: any) and to none in `avoid` (empty: none).
   std::optional<std::vector<int>> agents(int i, const Mask& avail, const Mask& avoid) {
-    SatFilter f;
-    if (!avail.empty()) f.allowed = satsOf(avail);
-    if (!avoid.empty()) f.avoided = satsOf(avoid);
-    auto sats = query(i, f);
+    auto sats = query(i, robotFilter(avail, avoid));
     if (!sats) return std::nullopt;
     std::vector<int> out;
     for (int s : *sats) {
@@ -35,28 +32,19 @@ class DependencyOracle {
   /// search_path_SAT: the SATs robot i's path is related to, through components whose SATs are
   /// all in `avail` (empty: any) and none in `avoid` (empty: none).
   std::optional<std::vector<int>> sats(int i, const Mask& avail, const Mask& avoid) {
-    SatFilter f;
-    f.allowed = avail;
-    f.avoided = avoid;
-    return query(i, f);
+    return query(i, SatFilter{avail, avoid});
   }
 
   /// Whether agents(i, avail, avoid) would find a path (a cheaper search that ranks no paths).
   bool agentPathExists(int i, const Mask& avail, const Mask& avoid) {
-    SatFilter f;
-    if (!avail.empty()) f.allowed = satsOf(avail);
-    if (!avoid.empty()) f.avoided = satsOf(avoid);
     ++queries_;
-    return pathExists(graphs_[i], f);
+    return pathExists(graphs_[i], robotFilter(avail, avoid));
   }
 
   /// Whether sats(i, avail, avoid) would find a path.
   bool satPathExists(int i, const Mask& avail, const Mask& avoid) {
-    SatFilter f;
-    f.allowed = avail;
-    f.avoided = avoid;
     ++queries_;
-    return pathExists(graphs_[i], f);
+    return pathExists(graphs_[i], SatFilter{avail, avoid});
   }
 
   long long queries() const { return queries_; }
@@ -65,6 +53,13 @@ class DependencyOracle {
   std::optional<std::vector<int>> query(int i, const SatFilter& f) {
     ++queries_;
     return searchPathSats(graphs_[i], f);
+  }
+  // Masks over robots as a filter over their SATs (empty masks stay empty: no restriction).
+  SatFilter robotFilter(const Mask& avail, const Mask& avoid) const {
+    SatFilter f;
+    if (!avail.empty()) f.allowed = satsOf(avail);
+    if (!avoid.empty()) f.avoided = satsOf(avoid);
+    return f;
   }
   Mask satsOf(const Mask& robots) const {
     Mask m(2 * n_, 0);
