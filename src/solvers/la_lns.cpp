@@ -3,11 +3,11 @@
 
 #include <algorithm>
 #include <array>
-#include <limits>
 #include <numeric>
 
 #include "fleet_planner/core/random.h"
 #include "fleet_planner/solvers/joint_repair.h"
+#include "fleet_planner/solvers/neighborhood_growth.h"
 #include "fleet_planner/solvers/registry.h"
 #include "fleet_planner/solvers/safe_interval_search.h"
 #include "fleet_planner/solvers/soft_path_search.h"
@@ -37,7 +37,7 @@ class LnsSearch {
         ideal_(n_),
         ideal_absent_(n_, false),
         escalation_(n_, 1),
-        size_(options.neighborhood_size) {
+        growth_(options.neighborhood_size, options.stall_repairs, n_) {
     weights_.fill(1.0);
   }
 
@@ -301,24 +301,9 @@ class LnsSearch {
     return others;
   }
 
-  // Repairs that have not brought the number of colliding pairs below its lowest so far are stuck
-  // in a local minimum that small neighbourhoods do not leave: after `stall_repairs` of them the
-  // neighbourhood doubles (up to every agent); a new lowest count brings it back to its size.
-  void adaptNeighborhoodSize() {
-    const int pairs = collidingPairs();
-    if (pairs < best_pairs_) {
-      best_pairs_ = pairs;
-      stalled_ = 0;
-      size_ = options_.neighborhood_size;
-    } else if (++stalled_ >= options_.stall_repairs) {
-      size_ = std::min(2 * size_, n_);
-      stalled_ = 0;
-    }
-  }
-
   void repair() {
     ++stats_.high_level_nodes;
-    adaptNeighborhoodSize();
+    size_ = growth_.next(collidingPairs());
     const Method method = chooseMethod();
     std::vector<int> group = method == kJoint ? knot() : neighborhood(method);
     std::vector<bool> in(n_, false);
@@ -381,9 +366,8 @@ class LnsSearch {
   std::vector<bool> ideal_absent_;  // the search proved there is no such path
   std::vector<int> escalation_;     // per agent: factor of the collision cost
   int planned_ = 0;                 // robots with a path in the first plan so far
-  int size_;                        // agents per neighbourhood now (adaptNeighborhoodSize)
-  int best_pairs_ = std::numeric_limits<int>::max();
-  int stalled_ = 0;                 // repairs since best_pairs_ was reached
+  NeighborhoodGrowth growth_;
+  int size_ = 0;                    // agents in this repair's neighbourhood (growth_)
   std::array<double, kMethods> weights_;
 };
 

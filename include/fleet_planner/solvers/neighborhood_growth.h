@@ -1,0 +1,38 @@
+#pragma once
+/// How many agents one LA-LNS repair replans (la_lns.h). Small neighbourhoods repair fast but
+/// settle in local minima of a few colliding pairs: after `stall_repairs` repairs without a new
+/// lowest number of colliding pairs the size doubles, up to every agent of the subproblem
+/// (colliding or not); a new lowest number brings it back to `base`.
+#include <algorithm>
+#include <limits>
+
+namespace fleet_planner {
+
+class NeighborhoodGrowth {
+ public:
+  NeighborhoodGrowth(int base, int stall_repairs, int agents)
+      : base_(std::min(base, agents)), stall_repairs_(stall_repairs), agents_(agents), size_(base_) {}
+
+  /// Called before each repair with the number of colliding pairs then; the repair's size.
+  int next(int colliding_pairs) {
+    if (colliding_pairs < best_) {
+      best_ = colliding_pairs;
+      stalled_ = 0;
+      size_ = base_;
+    } else if (++stalled_ >= stall_repairs_) {
+      size_ = std::min(2 * size_, agents_);
+      stalled_ = 0;
+    }
+    return size_;
+  }
+
+ private:
+  int base_;
+  int stall_repairs_;
+  int agents_;
+  int size_;
+  int best_ = std::numeric_limits<int>::max();
+  int stalled_ = 0;  // repairs since best_ was reached
+};
+
+}  // namespace fleet_planner
