@@ -242,15 +242,23 @@ class Solving {
   }
 
   // A pair of subproblem k's robots that no plan can serve, if one is proven among the pairs
-  // not tried before.
+  // not tried before: first the pairs the failure named (a knot the backend proved impossible
+  // around the other subproblems, the colliding pairs it was left with), then the others.
   std::optional<std::string> infeasiblePairIn(std::size_t k) {
     std::vector<std::pair<int, int>> pairs;
+    auto add = [&](int a, int b) {
+      if (a == b || pairs.size() >= kPairsPerFailure) return;
+      const std::pair<int, int> p{std::min(a, b), std::max(a, b)};
+      if (tried_pairs_.insert(p).second) pairs.push_back(p);
+    };
+    const std::vector<int> suspects = results_[k] ? results_[k]->culprits : std::vector<int>{};
+    for (std::size_t i = 0; i + 1 < suspects.size(); i += 2) add(suspects[i], suspects[i + 1]);
+    for (std::size_t j = 0; j < suspects.size(); ++j) {
+      for (std::size_t i = 0; i < j; ++i) add(suspects[i], suspects[j]);
+    }
     const std::vector<int>& robots = order_[k].robots;
-    for (std::size_t i = 0; i < robots.size() && pairs.size() < kPairsPerFailure; ++i) {
-      for (std::size_t j = i + 1; j < robots.size() && pairs.size() < kPairsPerFailure; ++j) {
-        const std::pair<int, int> p{std::min(robots[i], robots[j]), std::max(robots[i], robots[j])};
-        if (tried_pairs_.insert(p).second) pairs.push_back(p);
-      }
+    for (std::size_t i = 0; i < robots.size(); ++i) {
+      for (std::size_t j = i + 1; j < robots.size(); ++j) add(robots[i], robots[j]);
     }
     if (pairs.empty()) return std::nullopt;
     return findInfeasiblePair(instance_, graphs_, pairs, kPairExpansions,

@@ -6,6 +6,7 @@
 #include <numeric>
 
 #include "fleet_planner/core/random.h"
+#include "fleet_planner/solvers/joint_path_search.h"
 #include "fleet_planner/solvers/joint_repair.h"
 #include "fleet_planner/solvers/neighborhood_growth.h"
 #include "fleet_planner/solvers/registry.h"
@@ -66,6 +67,11 @@ class LnsSearch {
       }
       if (std::optional<SolveResult> stop = outOfBudget()) return *stop;
       repair();
+      if (proof_) {
+        SolveResult r = failedResult(SolveStatus::Infeasible, *proof_);
+        r.culprits = proof_culprits_;
+        return r;
+      }
     }
   }
 
@@ -84,8 +90,14 @@ class LnsSearch {
                                                     std::to_string(planned_) + " of " +
                                                     std::to_string(n_) + " robots planned)");
     }
-    return failedResult(SolveStatus::Timeout, why + " with " + std::to_string(collidingPairs()) +
-                                                  " colliding pairs of robots left" + somePairs());
+    SolveResult r = failedResult(SolveStatus::Timeout, why + " with " + std::to_string(collidingPairs()) +
+                                                           " colliding pairs of robots left" + somePairs());
+    for (int a = 0; a < n_; ++a) {
+      for (int b : partners_[a]) {
+        if (b > a) r.culprits.insert(r.culprits.end(), {space_.robot(a), space_.robot(b)});
+      }
+    }
+    return r;
   }
 
   // " (a & b, c & d, ...)": the first few colliding pairs, to say where the plan is stuck.
@@ -275,9 +287,35 @@ class LnsSearch {
     return true;
   }
 
-  // Replans the group jointly by LA-CBS around all others' paths, within a small share of the
-  // time left; false if it found no plan.
+  // Replans the group jointly around all others' paths: a joint search (joint_path_search.h)
+  // for a small group, LA-CBS within a small share of the time left for a larger one or if that
+  // search gives up; false if neither found a plan. A joint search that exhausts the group's
+  // joint space proves that the subproblem has no plan (proof_).
   bool planTogether(const std::vector<int>& group) {
+    if (static_cast<int>(group.size()) <= kMaxJointGroup) {
+      JointSearchOptions o;
+      o.collision_cost = options_.collision_cost;
+      o.max_expansions = options_.max_expansions_per_search;
+      const JointSearchResult r = jointPathSearch(space_, group, table_, problem_.deadline, o);
+      stats_.low_level_expansions += r.expansions;
+      if (r.outcome == JointSearchResult::Outcome::Found) {
+        for (std::size_t k = 0; k < group.size(); ++k) table_.insert(group[k], r.paths[k]);
+        return true;
+      }
+      if (r.outcome == JointSearchResult::Outcome::NoPath) {
+        std::vector<int> sorted = group;
+        std::sort(sorted.begin(), sorted.end());
+        std::string names;
+        for (std::size_t k = 0; k < sorted.size(); ++k)
+          names += (k == 0 ? "" : k + 1 == sorted.size() ? " and " : ", ") + space_.label(sorted[k]);
+        proof_culprits_.clear();
+        for (int a : sorted) proof_culprits_.push_back(space_.robot(a));
+        proof_ = names + " cannot all reach their targets around the obstacles they must avoid " +
+                 "(their joint search ran out of states)";
+        return false;
+      }
+      if (r.outcome == JointSearchResult::Outcome::Expired) return false;
+    }
     const double seconds = std::min(options_.joint_seconds, problem_.deadline.remaining() / 4);
     const std::vector<StatePath> paths =
         jointRepair(space_, problem_, table_, group, seconds, options_.joint_max_expansions,
@@ -366,6 +404,8 @@ class LnsSearch {
   std::vector<bool> ideal_absent_;  // the search proved there is no such path
   std::vector<int> escalation_;     // per agent: factor of the collision cost
   int planned_ = 0;                 // robots with a path in the first plan so far
+  std::optional<std::string> proof_;  // why the subproblem has no plan, once a search proved it
+  std::vector<int> proof_culprits_;   // the robots of that proof (instance indices)
   NeighborhoodGrowth growth_;
   int size_ = 0;                    // agents in this repair's neighbourhood (growth_)
   std::array<double, kMethods> weights_;

@@ -208,25 +208,28 @@ TEST(LayeredPlanner, FailedSubproblemIsMergedWithItsNeighbour) {
 
 // A and B swap along a corridor whose only pocket, the top of a two-cell stem, holds C (start
 // and target). Each of A and B can pass C alone, so C is a subproblem of its own and the level
-// {A, B} sees it as an obstacle: no pocket is left and that level fails. Solved again with C free
-// to step aside, C backs down the stem, one of A and B waits in the pocket, and C comes back:
-// C's plan is its own (empty) one followed by the step aside, and the whole plan is valid.
-// (LA-LaCAM only: LA-CBS and LA-LNS do not solve this three-robot knot even raw, see the README.)
+// {A, B} sees it as an obstacle: no pocket is left and that level fails (LA-LNS proves it). Solved
+// again with C free to step aside, C backs down the stem, one of A and B waits in the pocket, and
+// C comes back: C's plan is its own (empty) one followed by the step aside, and the whole plan is
+// valid. (LA-CBS does not solve this three-robot knot even raw, see the README.)
 TEST(LayeredStepAside, StandingRobotStepsAsideForAFailedLevel) {
   const GridMap map = test::mapFromRows({".......", "@@@.@@@", "@@@.@@@"});
   Instance in;
   in.robots = {dot("A", {0, 0, 0}, {6, 0, 0}), dot("B", {6, 0, 1}, {0, 0, 1}), dot("C", {3, 1, 2}, {3, 1, 2})};
-  const LayeredResult r = plan(map, in, "la_lacam", true, 3.0);
-  ASSERT_TRUE(r.success()) << r.reason;
-  EXPECT_TRUE(validatePlan(map, in, r.plan).valid());
-  ASSERT_EQ(r.step_asides.size(), 1u);
-  EXPECT_TRUE(r.merges.empty()) << r.merges.front();
-  bool helped = false;
-  for (const auto& s : r.subproblems) helped = helped || s.stepping_aside == std::vector<int>{2};
-  EXPECT_TRUE(helped);
-  const Path& c = r.plan.paths[2];
-  EXPECT_TRUE(std::any_of(c.begin(), c.end(), [](const GridPose& p) { return p.y == 2; })) << "C never stepped aside";
-  EXPECT_EQ(c.back(), (GridPose{3, 1, 2}));
+  for (const std::string backend : {"la_lacam", "la_lns"}) {
+    SCOPED_TRACE(backend);
+    const LayeredResult r = plan(map, in, backend, true, 3.0);
+    ASSERT_TRUE(r.success()) << r.reason;
+    EXPECT_TRUE(validatePlan(map, in, r.plan).valid());
+    ASSERT_EQ(r.step_asides.size(), 1u);
+    EXPECT_TRUE(r.merges.empty()) << r.merges.front();
+    bool helped = false;
+    for (const auto& s : r.subproblems) helped = helped || s.stepping_aside == std::vector<int>{2};
+    EXPECT_TRUE(helped);
+    const Path& c = r.plan.paths[2];
+    EXPECT_TRUE(std::any_of(c.begin(), c.end(), [](const GridPose& p) { return p.y == 2; })) << "C never stepped aside";
+    EXPECT_EQ(c.back(), (GridPose{3, 1, 2}));
+  }
 }
 
 TEST(LayeredPlanner, RawModeIsOneSubproblem) {

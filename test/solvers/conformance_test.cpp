@@ -141,7 +141,9 @@ TEST_P(Conformance, CorridorSwapWithoutPocketFailsPromptly) {
 
 TEST_P(Conformance, TightRoomHonoursShortDeadline) {
   // 8 dots cross an 8 x 8 room in reversed row order while 4 blocks in the middle trade
-  // places diagonally, each ending turned round.
+  // places diagonally, each ending turned round. There is no plan: blocks b0 and b2 touch each
+  // other's footprint with every first move (the exhaustive search of the tests agrees), which
+  // LA-LNS proves with its joint search; the others run out of time.
   std::vector<Robot> robots;
   for (int y = 0; y < 8; ++y)
     robots.push_back(dot("d" + std::to_string(y), {0, y, 0}, {7, 7 - y, 0}));
@@ -155,7 +157,8 @@ TEST_P(Conformance, TightRoomHonoursShortDeadline) {
   if (o.result.status == SolveStatus::Success) {
     EXPECT_TRUE(solvedValidly(o));
   } else {
-    EXPECT_EQ(o.result.status, SolveStatus::Timeout) << describe(o);
+    EXPECT_TRUE(o.result.status == SolveStatus::Timeout || o.result.status == SolveStatus::Infeasible)
+        << describe(o);
   }
 }
 

@@ -167,5 +167,27 @@ TEST(LaLns, AvoidsMovingObstacleThatParksOnItsRoute) {
   EXPECT_TRUE(v.valid()) << v.violation.message;
 }
 
+
+// A and B swap along a corridor whose only pocket holds C, at its target. Replanned one by one,
+// C has no reason to move and A and B each prefer one colliding step to waiting: the joint step
+// (joint_path_search.h) unties it.
+TEST(LaLns, UntiesThreeRobotKnot) {
+  const World w(mapFromRows({".......", "@@@.@@@", "@@@.@@@"}),
+                {dot("A", {0, 0, 0}, {6, 0, 0}), dot("B", {6, 0, 1}, {0, 0, 1}), dot("C", {3, 1, 2}, {3, 1, 2})});
+  const Outcome o = solveWith("la_lns", w, allRobots(w, 5.0));
+  ASSERT_TRUE(solvedValidly(o));
+}
+
+// Two robots that cannot pass each other: the joint step proves it and names them, at once.
+TEST(LaLns, ProvesAnImpossibleSwapAndNamesBothRobots) {
+  const World w(freeMap(6, 1), {dot("a", {0, 0, 0}, {5, 0, 0}), dot("b", {5, 0, 1}, {0, 0, 1})});
+  const Outcome o = solveWith("la_lns", w, allRobots(w, 5.0));
+  EXPECT_EQ(o.result.status, SolveStatus::Infeasible) << describe(o);
+  EXPECT_NE(o.result.reason.find("'a'"), std::string::npos) << o.result.reason;
+  EXPECT_NE(o.result.reason.find("'b'"), std::string::npos) << o.result.reason;
+  EXPECT_EQ(o.result.culprits, (std::vector<int>{0, 1}));
+  EXPECT_LT(o.wall_s, 1.0) << describe(o);
+}
+
 }  // namespace
 }  // namespace fleet_planner::test

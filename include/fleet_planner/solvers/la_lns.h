@@ -14,12 +14,15 @@
 /// number of colliding pairs, the neighbourhood doubles until one does; at the size of the
 /// subproblem every agent is replanned, colliding or not: a knot of a few pairs in a packed level
 /// may need all of its robots to move differently. A fourth kind of step replans a colliding
-/// agent and up to two of its partners together by LA-CBS around everybody else
-/// (joint_repair.h), for the knots that one-by-one replanning cannot untie.
+/// agent and up to two of its partners together, around everybody else as soft obstacles, by a
+/// joint search (joint_path_search.h; LA-CBS, joint_repair.h, if that search gives up), for the
+/// knots that one-by-one replanning cannot untie.
 ///
 /// Beyond the paper's backends. Serial: static footprints and the timed paths of other
-/// subproblems are hard obstacles. Incomplete: it never proves a subproblem infeasible (only
-/// the pre-check does); an unsolved subproblem is TIMEOUT. Same input and seed, same plan.
+/// subproblems are hard obstacles. Incomplete: the only proof it gives is a knot whose joint
+/// search exhausts its joint space (INFEASIBLE, naming the robots: they cannot reach their
+/// targets together around the hard obstacles); any other unsolved subproblem is TIMEOUT. Same
+/// input and seed, same plan.
 #include "fleet_planner/solvers/solver.h"
 
 namespace fleet_planner {
@@ -34,8 +37,8 @@ struct LaLnsOptions {
   int collision_cost = 16;
   /// Expansions of one low-level search before it gives up.
   long long max_expansions_per_search = 200'000;
-  /// Joint repair (joint_repair.h): agents replanned together by LA-CBS, its time (at most a
-  /// quarter of what is left) and its expansions.
+  /// Joint repair: agents replanned together (joint_path_search.h up to kMaxJointGroup), and
+  /// LA-CBS's time (at most a quarter of what is left) and expansions when that search gives up.
   int joint_size = 3;
   double joint_seconds = 0.5;
   long long joint_max_expansions = 100'000;

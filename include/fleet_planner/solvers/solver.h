@@ -66,6 +66,9 @@ struct SolveResult {
   std::string reason;       ///< human-readable, names the robot where one is to blame
   std::vector<Path> paths;  ///< on success: one per Subproblem::robots entry, same order
   SolveStats stats;
+  /// On failure, the robots it is about (instance indices), most suspect first: a group proven
+  /// unable to reach its targets, or the robots of the colliding pairs left. May be empty.
+  std::vector<int> culprits;
   bool success() const { return status == SolveStatus::Success; }
 };
 

@@ -1,0 +1,155 @@
+// The joint search of LA-LNS's knots (joint_path_search.h): its sum of costs against the
+// independent exhaustive search on random tiny instances, its proof that a group has no plan,
+// and the knot that replanning robot by robot cannot untie. Every plan goes through the
+// validator.
+#include <gtest/gtest.h>
+
+#include "exhaustive_search.h"
+#include "fleet_planner/core/errors.h"
+#include "fleet_planner/core/plan_validator.h"
+#include "fleet_planner/core/random.h"
+#include "fleet_planner/solvers/joint_path_search.h"
+#include "fleet_planner/solvers/registry.h"
+#include "fleet_planner/solvers/search_space.h"
+#include "fleet_planner/solvers/solve_common.h"
+#include "solver_test_util.h"
+#include "test_maps.h"
+
+namespace fleet_planner::test {
+namespace {
+
+std::vector<int> everyAgent(const SearchSpace& space) {
+  std::vector<int> group(space.numAgents());
+  for (int a = 0; a < space.numAgents(); ++a) group[a] = a;
+  return group;
+}
+
+JointSearchResult searchAll(const Subproblem& sub) {
+  const SearchSpace space(sub);
+  const SoftPathTable empty(space);
+  JointSearchOptions options;
+  options.max_expansions = 4'000'000;  // the exhaustive reference's budget
+  return jointPathSearch(space, everyAgent(space), empty, sub.deadline, options);
+}
+
+// The plan of a search over every robot of the world (instance order), through the validator.
+::testing::AssertionResult validJointPlan(const World& w, const Subproblem& sub,
+                                          const JointSearchResult& r, long long& soc) {
+  const SearchSpace space(sub);
+  Plan plan;
+  plan.paths = toPosePaths(space, r.paths);
+  const ValidationResult v = validatePlan(w.map, w.instance, plan);
+  if (!v.valid()) return ::testing::AssertionFailure() << v.violation.message;
+  soc = planMetrics(plan, w.targets()).soc;
+  return ::testing::AssertionSuccess();
+}
+
+// A random map of at most 20 cells (12 for three robots) with a few walls and 2-3 dots and bars at random poses; the
+// World constructor rejects overlapping or illegal poses, and such draws are drawn again.
+std::unique_ptr<World> randomTinyWorld(Rng& rng, int robots) {
+  const int cells = robots == 2 ? 20 : 12;
+  for (;;) {
+    const int width = static_cast<int>(rng.uniformInt(3, 5));
+    const int height = static_cast<int>(rng.uniformInt(2, cells / width));
+    std::vector<std::string> rows(height, std::string(width, '.'));
+    for (int k = static_cast<int>(rng.uniformInt(0, 3)); k > 0; --k)
+      rows[rng.uniformInt(0, height - 1)][rng.uniformInt(0, width - 1)] = '@';
+    auto pose = [&] {
+      return GridPose{static_cast<int>(rng.uniformInt(0, width - 1)), static_cast<int>(rng.uniformInt(0, height - 1)),
+                      static_cast<int>(rng.uniformInt(0, 3))};
+    };
+    std::vector<Robot> fleet;
+    for (int i = 0; i < robots; ++i) {
+      const std::string id = "r" + std::to_string(i);
+      fleet.push_back(rng.uniformInt(0, 3) == 0 ? bar(id, pose(), pose()) : dot(id, pose(), pose()));
+    }
+    try {
+      return std::make_unique<World>(mapFromRows(rows), fleet);
+    } catch (const InvalidInput&) {
+    }
+  }
+}
+
+// With nothing outside the group, the search is an optimal joint search: it finds a plan exactly
+// when the exhaustive reference does, of the same (optimal) sum of costs, and proves the rest.
+TEST(JointPathSearch, SocEqualsExhaustiveOptimumOnRandomTinyInstances) {
+  Rng rng(11);
+  int solved = 0, proven = 0;
+  for (int round = 0; round < 200; ++round) {
+    const std::unique_ptr<World> w = randomTinyWorld(rng, round % 3 == 0 ? 3 : 2);
+    const ExhaustiveResult best = exhaustiveSearch(w->map, w->instance, 4'000'000);
+    if (best.budget_exhausted) continue;
+    const Subproblem sub = allRobots(*w);
+    const JointSearchResult r = searchAll(sub);
+    SCOPED_TRACE("round " + std::to_string(round));
+    if (best.soc < 0) {
+      EXPECT_EQ(r.outcome, JointSearchResult::Outcome::NoPath);
+      ++proven;
+      continue;
+    }
+    ASSERT_EQ(r.outcome, JointSearchResult::Outcome::Found);
+    long long soc = -1;
+    ASSERT_TRUE(validJointPlan(*w, sub, r, soc));
+    EXPECT_EQ(soc, best.soc);
+    EXPECT_EQ(r.collisions, 0);
+    ++solved;
+  }
+  EXPECT_GT(solved, 80);
+  EXPECT_GT(proven, 60);
+}
+
+// A and B swap along a corridor whose only pocket holds C, at its target: C backs down the stem,
+// one of A and B waits in the pocket, and C comes back. Replanned one by one, C has no reason to
+// move and A and B each prefer one colliding step to a detour.
+TEST(JointPathSearch, UntiesThreeRobotKnot) {
+  const World w(mapFromRows({".......", "@@@.@@@", "@@@.@@@"}),
+                {dot("A", {0, 0, 0}, {6, 0, 0}), dot("B", {6, 0, 1}, {0, 0, 1}), dot("C", {3, 1, 2}, {3, 1, 2})});
+  const Subproblem sub = allRobots(w);
+  const JointSearchResult r = searchAll(sub);
+  ASSERT_EQ(r.outcome, JointSearchResult::Outcome::Found);
+  long long soc = -1;
+  ASSERT_TRUE(validJointPlan(w, sub, r, soc));
+  const ExhaustiveResult best = exhaustiveSearch(w.map, w.instance);
+  EXPECT_EQ(soc, best.soc);
+}
+
+// Without a pocket the swap has no plan, and the search says so once the joint space is
+// exhausted, long before its expansion budget.
+TEST(JointPathSearch, SwapWithoutPocketIsProvenImpossible) {
+  const World w(freeMap(6, 1), {dot("a", {0, 0, 0}, {5, 0, 0}), dot("b", {5, 0, 1}, {0, 0, 1})});
+  const JointSearchResult r = searchAll(allRobots(w));
+  EXPECT_EQ(r.outcome, JointSearchResult::Outcome::NoPath);
+  EXPECT_LT(r.expansions, 10'000);
+}
+
+// An agent outside the group is a soft obstacle: parked in the only pocket, the swapping pair
+// must pass through it and pays for it; as a hard static footprint it leaves no plan at all.
+TEST(JointPathSearch, AgentsOutsideTheGroupAreSoft) {
+  const World w(mapFromRows({".......", "@@@.@@@"}),
+                {dot("a", {0, 0, 0}, {6, 0, 0}), dot("b", {6, 0, 1}, {0, 0, 1}), dot("p", {3, 1, 0}, {3, 1, 0})});
+  Subproblem sub = allRobots(w);
+  {
+    const SearchSpace space(sub);
+    SoftPathTable table(space);
+    table.insert(2, {space.start(2)});
+    const JointSearchResult r = jointPathSearch(space, {0, 1}, table, sub.deadline);
+    ASSERT_EQ(r.outcome, JointSearchResult::Outcome::Found);
+    EXPECT_GT(r.collisions, 0);
+  }
+  sub.robots = {0, 1};
+  sub.blocked = {{2, {3, 1, 0}}};
+  const JointSearchResult hard = searchAll(sub);
+  EXPECT_EQ(hard.outcome, JointSearchResult::Outcome::NoPath);
+}
+
+TEST(JointPathSearch, RejectsGroupsLargerThanItsLimit) {
+  const World w(freeMap(6, 2), {dot("a", {0, 0, 0}, {5, 0, 0}), dot("b", {1, 0, 0}, {4, 0, 0}),
+                                dot("c", {0, 1, 0}, {5, 1, 0}), dot("d", {1, 1, 0}, {4, 1, 0})});
+  const Subproblem sub = allRobots(w);
+  const SearchSpace space(sub);
+  const SoftPathTable empty(space);
+  EXPECT_THROW(jointPathSearch(space, {0, 1, 2, 3}, empty, sub.deadline), InvalidInput);
+}
+
+}  // namespace
+}  // namespace fleet_planner::test
