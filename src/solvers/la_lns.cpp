@@ -295,7 +295,7 @@ class LnsSearch {
     if (static_cast<int>(group.size()) <= kMaxJointGroup) {
       JointSearchOptions o;
       o.collision_cost = options_.collision_cost;
-      o.max_expansions = options_.max_expansions_per_search;
+      o.max_expansions = options_.joint_search_expansions;
       const JointSearchResult r = jointPathSearch(space_, group, table_, problem_.deadline, o);
       stats_.low_level_expansions += r.expansions;
       if (r.outcome == JointSearchResult::Outcome::Found) {
