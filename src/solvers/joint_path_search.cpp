@@ -113,7 +113,7 @@ JointSearchResult jointPathSearch(const SearchSpace& space, const std::vector<in
       result.outcome = JointSearchResult::Outcome::Expired;
       return result;
     }
-    if (result.expansions >= options.max_expansions) {
+    if (static_cast<long long>(nodes.size()) >= options.max_nodes) {
       result.outcome = JointSearchResult::Outcome::NodeLimit;
       return result;
     }

@@ -287,41 +287,43 @@ class LnsSearch {
     return true;
   }
 
-  // Replans the group jointly around all others' paths: a joint search (joint_path_search.h)
-  // for a small group, LA-CBS within a small share of the time left for a larger one or if that
-  // search gives up; false if neither found a plan. A joint search that exhausts the group's
-  // joint space proves that the subproblem has no plan (proof_).
+  // Replans the group jointly around all others' paths: by LA-CBS within a small share of the
+  // time left (others hard), and if that finds nothing, for a small group and once the
+  // neighbourhood has grown to the whole subproblem, by a joint search (joint_path_search.h;
+  // others soft); false if neither found a plan. A joint search that exhausts the group's joint
+  // space proves that the subproblem has no plan (proof_). The joint search waits for the deep
+  // stall because it costs time the repair needs: run at every joint step, its budget spent
+  // 4-5 s of the 7 s that LA-LNS had for a 12-robot level of maze-128-128-10 K=40, which it
+  // otherwise solves in that time.
   bool planTogether(const std::vector<int>& group) {
-    if (static_cast<int>(group.size()) <= kMaxJointGroup) {
-      JointSearchOptions o;
-      o.collision_cost = options_.collision_cost;
-      o.max_expansions = options_.joint_search_expansions;
-      const JointSearchResult r = jointPathSearch(space_, group, table_, problem_.deadline, o);
-      stats_.low_level_expansions += r.expansions;
-      if (r.outcome == JointSearchResult::Outcome::Found) {
-        for (std::size_t k = 0; k < group.size(); ++k) table_.insert(group[k], r.paths[k]);
-        return true;
-      }
-      if (r.outcome == JointSearchResult::Outcome::NoPath) {
-        std::vector<int> sorted = group;
-        std::sort(sorted.begin(), sorted.end());
-        std::string names;
-        for (std::size_t k = 0; k < sorted.size(); ++k)
-          names += (k == 0 ? "" : k + 1 == sorted.size() ? " and " : ", ") + space_.label(sorted[k]);
-        proof_culprits_.clear();
-        for (int a : sorted) proof_culprits_.push_back(space_.robot(a));
-        proof_ = names + " cannot all reach their targets around the obstacles they must avoid " +
-                 "(their joint search ran out of states)";
-        return false;
-      }
-      if (r.outcome == JointSearchResult::Outcome::Expired) return false;
-    }
     const double seconds = std::min(options_.joint_seconds, problem_.deadline.remaining() / 4);
     const std::vector<StatePath> paths =
         jointRepair(space_, problem_, table_, group, seconds, options_.joint_max_expansions,
                     rng_.next(), stats_.low_level_expansions);
     for (std::size_t k = 0; k < paths.size(); ++k) table_.insert(group[k], paths[k]);
-    return !paths.empty();
+    if (!paths.empty()) return true;
+    if (static_cast<int>(group.size()) > kMaxJointGroup || size_ < n_) return false;
+    JointSearchOptions o;
+    o.collision_cost = options_.collision_cost;
+    o.max_nodes = options_.joint_search_nodes;
+    const JointSearchResult r = jointPathSearch(space_, group, table_, problem_.deadline, o);
+    stats_.low_level_expansions += r.expansions;
+    if (r.outcome == JointSearchResult::Outcome::Found) {
+      for (std::size_t k = 0; k < group.size(); ++k) table_.insert(group[k], r.paths[k]);
+      return true;
+    }
+    if (r.outcome == JointSearchResult::Outcome::NoPath) {
+      std::vector<int> sorted = group;
+      std::sort(sorted.begin(), sorted.end());
+      std::string names;
+      for (std::size_t k = 0; k < sorted.size(); ++k)
+        names += (k == 0 ? "" : k + 1 == sorted.size() ? " and " : ", ") + space_.label(sorted[k]);
+      proof_culprits_.clear();
+      for (int a : sorted) proof_culprits_.push_back(space_.robot(a));
+      proof_ = names + " cannot all reach their targets around the obstacles they must avoid " +
+               "(their joint search ran out of states)";
+    }
+    return false;
   }
 
   // A colliding agent and up to joint_size - 1 of its partners.

@@ -24,8 +24,9 @@ namespace fleet_planner {
 struct JointSearchOptions {
   /// Cost of one colliding step with an agent outside the group, in steps of path length.
   int collision_cost = 16;
-  /// Expansions before the search gives up (NodeLimit).
-  long long max_expansions = 200'000;
+  /// Joint states stored before the search gives up (NodeLimit). An expansion stores up to 5^n
+  /// of them (n robots), so this bounds time and memory alike: 500,000 take about 0.1-0.2 s.
+  long long max_nodes = 500'000;
 };
 
 struct JointSearchResult {

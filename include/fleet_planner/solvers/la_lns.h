@@ -14,8 +14,8 @@
 /// number of colliding pairs, the neighbourhood doubles until one does; at the size of the
 /// subproblem every agent is replanned, colliding or not: a knot of a few pairs in a packed level
 /// may need all of its robots to move differently. A fourth kind of step replans a colliding
-/// agent and up to two of its partners together, around everybody else as soft obstacles, by a
-/// joint search (joint_path_search.h; LA-CBS, joint_repair.h, if that search gives up), for the
+/// agent and up to two of its partners together around everybody else, by LA-CBS
+/// (joint_repair.h) and, where that fails, by a joint search (joint_path_search.h), for the
 /// knots that one-by-one replanning cannot untie.
 ///
 /// Beyond the paper's backends. Serial: static footprints and the timed paths of other
@@ -37,12 +37,12 @@ struct LaLnsOptions {
   int collision_cost = 16;
   /// Expansions of one low-level search before it gives up.
   long long max_expansions_per_search = 200'000;
-  /// Joint repair: agents replanned together (joint_path_search.h up to kMaxJointGroup), the
-  /// expansions of that search (each generates up to 5^3 joint moves: on AR0044SR, 200,000 took
-  /// 0.9 s for two robots and 3.6 s for three), and LA-CBS's time (at most a quarter of what is
-  /// left) and expansions when that search gives up.
+  /// Joint repair: agents replanned together, first by LA-CBS (its time, at most a quarter of
+  /// what is left, and its expansions), then, if it fails, the group is small enough and the
+  /// neighbourhood has grown to the whole subproblem, by a joint search (joint_path_search.h)
+  /// storing at most this many joint states (about 0.1 s on maze-128-128-10).
   int joint_size = 3;
-  long long joint_search_expansions = 20'000;
+  long long joint_search_nodes = 50'000;
   double joint_seconds = 0.5;
   long long joint_max_expansions = 100'000;
 };
