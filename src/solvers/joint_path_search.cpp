@@ -18,7 +18,7 @@ struct Node {
   Joint s;
   int t;      // time, collapsed into the static layer
   int steps;  // the real time
-  int g;      // member-steps away from target + collision_cost * collisions
+  int g;      // member-steps before committing + collision_cost * collisions
   int f;
   int collisions;
   unsigned done;  // members that hold their targets from here on (bit i: member i)
@@ -49,7 +49,7 @@ struct Move {
   const CellSet* swept;
   Cell origin;
   int collisions;  // agents outside the group met during the step
-  int cost;        // 0 for waiting at the target, else 1
+  int cost;        // 0 for a member committed to its target, else 1
 };
 
 }  // namespace

@@ -25,8 +25,9 @@ struct JointSearchOptions {
   /// Cost of one colliding step with an agent outside the group, in steps of path length.
   int collision_cost = 16;
   /// Joint states stored before the search gives up (NodeLimit). An expansion stores up to 5^n
-  /// of them (n robots), so this bounds time and memory alike: 500,000 take about 0.1-0.2 s.
-  long long max_nodes = 500'000;
+  /// of them (n robots), so this bounds time and memory alike: on maze-128-128-10, 500,000
+  /// took 0.35-0.4 s for three robots and 0.5-0.9 s for two (longer paths, more expansions).
+  long long max_nodes = 50'000;
 };
 
 struct JointSearchResult {

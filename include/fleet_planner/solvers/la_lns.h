@@ -40,7 +40,7 @@ struct LaLnsOptions {
   /// Joint repair: agents replanned together, first by LA-CBS (its time, at most a quarter of
   /// what is left, and its expansions), then, if it fails, the group is small enough and the
   /// neighbourhood has grown to the whole subproblem, by a joint search (joint_path_search.h)
-  /// storing at most this many joint states (about 0.1 s on maze-128-128-10).
+  /// storing at most this many joint states (see JointSearchOptions::max_nodes for its cost).
   int joint_size = 3;
   long long joint_search_nodes = 50'000;
   double joint_seconds = 0.5;
