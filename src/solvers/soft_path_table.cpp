@@ -57,7 +57,9 @@ void SoftPathTable::index(int a, bool on) {
     const Action act = stepAction(g, path[t], path[t + 1]);
     // A wait after a wait at the same state is the same motion: it extends the bucket's run.
     const bool same = act == Action::Wait && t > 0 && path[t - 1] == path[t];
-    forBuckets(space_.cells(a).swept(p.heading, act), {p.x, p.y}, [&](int bucket) {
+    const CellSet& swept = space_.cells(a).swept(p.heading, act);
+    const Bucket span = bucketsOf(swept, {p.x, p.y});
+    forBuckets(swept, {p.x, p.y}, [&](int bucket) {
       std::vector<int>& agents = moving_[key(t, bucket)];
       edit(agents);
       if (agents.empty()) moving_.erase(key(t, bucket));
@@ -67,7 +69,7 @@ void SoftPathTable::index(int a, bool on) {
       } else if (same && !runs.empty() && runs.back().agent == a && runs.back().last == t - 1) {
         runs.back().last = t;
       } else {
-        runs.push_back({t, t, a});
+        runs.push_back({t, t, a, span.x0, span.y0});
       }
     });
   }
@@ -105,10 +107,10 @@ bool SoftPathTable::hits(int a, const GridPose& p, Action action, int b, int t) 
   return sweepsOverlap(space_.cells(a), p, action, space_.cells(b), g.pose(s), stepAction(g, s, n));
 }
 
-void SoftPathTable::addOnce(int b, std::vector<int>& out) const {
-  if (stamp_[b] == query_) return;
+bool SoftPathTable::firstVisit(int b) const {
+  if (stamp_[b] == query_) return false;
   stamp_[b] = query_;
-  out.push_back(b);
+  return true;
 }
 
 void SoftPathTable::collisions(int a, StateId s, Action action, int t,
@@ -117,8 +119,9 @@ void SoftPathTable::collisions(int a, StateId s, Action action, int t,
   stamp_[a] = query_;
   const GridPose p = space_.graph(a).pose(s);
   forBuckets(space_.cells(a).swept(p.heading, action), {p.x, p.y}, [&](int bucket) {
+    // Each agent is checked once, though its motion may touch several of these buckets.
     auto check = [&](int b) {
-      if (stamp_[b] != query_ && hits(a, p, action, b, t)) addOnce(b, out);
+      if (firstVisit(b) && hits(a, p, action, b, t)) out.push_back(b);
     };
     if (auto it = moving_.find(key(t, bucket)); it != moving_.end()) {
       for (int b : it->second) check(b);
@@ -138,13 +141,14 @@ void SoftPathTable::collisionsHolding(int a, StateId s, int t, std::vector<int>&
   forBuckets(body, {p.x, p.y}, [&](int bucket) {
     for (int b : parked_[bucket]) {
       if (stamp_[b] != query_ && hits(a, p, Action::Wait, b, static_cast<int>(paths_[b].size())))
-        addOnce(b, out);
+        out.push_back(b), stamp_[b] = query_;
     }
     for (int step = t; step <= last; ++step) {
       const auto it = moving_.find(key(step, bucket));
       if (it == moving_.end()) continue;
       for (int b : it->second) {
-        if (stamp_[b] != query_ && hits(a, p, Action::Wait, b, step)) addOnce(b, out);
+        if (stamp_[b] != query_ && hits(a, p, Action::Wait, b, step))
+          out.push_back(b), stamp_[b] = query_;
       }
     }
   });
@@ -154,15 +158,22 @@ void SoftPathTable::unsafeRuns(int a, StateId s, Action action,
                                std::vector<std::pair<int, int>>& runs, int& forever_from) const {
   runs.clear();
   forever_from = kNever;
+  ++query_;
+  stamp_[a] = query_;
   const GridPose p = space_.graph(a).pose(s);
-  forBuckets(space_.cells(a).swept(p.heading, action), {p.x, p.y}, [&](int bucket) {
+  const CellSet& swept = space_.cells(a).swept(p.heading, action);
+  const Bucket span = bucketsOf(swept, {p.x, p.y});
+  forBuckets(swept, {p.x, p.y}, [&](int bucket) {
+    const int x = bucket % bx_, y = bucket / bx_;
     for (const Run& r : by_bucket_[bucket]) {
-      // Every step of a run is the same motion: one check answers for all of them.
+      // A motion and the query share a rectangle of buckets: check the pair in its first one
+      // only. Every step of a run is the same motion: one check answers for all of them.
+      if (x != std::max(span.x0, r.x0) || y != std::max(span.y0, r.y0)) continue;
       if (r.agent != a && hits(a, p, action, r.agent, r.first)) runs.emplace_back(r.first, r.last);
     }
     for (int b : parked_[bucket]) {
       const int from = static_cast<int>(paths_[b].size()) - 1;
-      if (b != a && from < forever_from && hits(a, p, action, b, from)) forever_from = from;
+      if (from < forever_from && firstVisit(b) && hits(a, p, action, b, from)) forever_from = from;
     }
   });
 }

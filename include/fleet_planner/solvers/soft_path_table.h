@@ -62,7 +62,8 @@ class SoftPathTable {
   void index(int a, bool on);
   // a doing `action` from pose p during step t collides with b's motion during that step.
   bool hits(int a, const GridPose& p, Action action, int b, int t) const;
-  void addOnce(int b, std::vector<int>& out) const;
+  // True the first time agent b is met in the current query (query_).
+  bool firstVisit(int b) const;
 
   const SearchSpace& space_;
   int width_, height_, bx_, by_, buckets_;
@@ -72,6 +73,7 @@ class SoftPathTable {
   struct Run {
     int first, last;  // steps of one motion repeated (a wait), or a single step
     int agent;
+    int x0, y0;  // the motion's first bucket (column, row)
   };
   std::vector<std::vector<Run>> by_bucket_;   // bucket -> the motions that touch it
   mutable std::vector<std::uint32_t> stamp_;  // dedup of query results
