@@ -7,6 +7,7 @@
 #include <unordered_map>
 
 #include "fleet_planner/core/errors.h"
+#include "soft_order.h"
 
 namespace fleet_planner {
 
@@ -81,14 +82,7 @@ JointSearchResult jointPathSearch(const SearchSpace& space, const std::vector<in
   const unsigned all = (1u << n) - 1;
   std::vector<Node> nodes;
   std::unordered_map<Key, int, KeyHash> seen;
-  auto worse = [&nodes](int x, int y) {
-    const Node &p = nodes[x], &q = nodes[y];
-    if (p.f != q.f) return p.f > q.f;
-    if (p.collisions != q.collisions) return p.collisions > q.collisions;
-    if (p.steps != q.steps) return p.steps < q.steps;  // deeper first
-    return x > y;
-  };
-  std::priority_queue<int, std::vector<int>, decltype(worse)> open(worse);
+  std::priority_queue<int, std::vector<int>, SoftOrder<Node>> open(SoftOrder<Node>{&nodes});
   auto heuristic = [&](const Joint& s, unsigned done) {
     int h = 0;
     for (int i = 0; i < n; ++i) h += (done >> i & 1u) ? 0 : space.distance(group[i], s[i]);

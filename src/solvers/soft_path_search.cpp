@@ -5,6 +5,7 @@
 
 #include "fleet_planner/solvers/space_time_astar.h"
 #include "node_table.h"
+#include "soft_order.h"
 
 namespace fleet_planner {
 
@@ -45,14 +46,7 @@ SoftSearchResult softPathSearch(const SearchSpace& space, int a, const SoftPathT
     return (static_cast<std::uint64_t>(t) << 33) | (static_cast<std::uint64_t>(finished) << 32) |
            static_cast<std::uint32_t>(s);
   };
-  auto worse = [&nodes](int x, int y) {
-    const Node &p = nodes[x], &q = nodes[y];
-    if (p.f != q.f) return p.f > q.f;
-    if (p.collisions != q.collisions) return p.collisions > q.collisions;
-    if (p.steps != q.steps) return p.steps < q.steps;  // deeper first
-    return x > y;
-  };
-  std::priority_queue<int, std::vector<int>, decltype(worse)> open(worse);
+  std::priority_queue<int, std::vector<int>, SoftOrder<Node>> open(SoftOrder<Node>{&nodes});
   auto heuristic = [&](StateId s, int steps) {
     return std::max(space.distance(a, s), goal_earliest - steps);
   };
