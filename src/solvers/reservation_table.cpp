@@ -33,7 +33,14 @@ ReservationTable::ReservationTable(int width, int height, const std::vector<Movi
         throw InvalidInput("moving obstacle of robot index " + std::to_string(m.robot) + " makes an illegal step at t=" +
                            std::to_string(t));
       }
-      reserve(cells.swept(m.path[t].heading, *action), m.path[t], static_cast<int>(t), static_cast<int>(t));
+      // A run of waits is one reservation: merged plans wait for thousands of steps, and one
+      // entry per cell and step made building the table most of the refinement's time.
+      std::size_t last = t;
+      if (*action == Action::Wait) {
+        while (last + 2 < m.path.size() && m.path[last + 2] == m.path[t]) ++last;
+      }
+      reserve(cells.swept(m.path[t].heading, *action), m.path[t], static_cast<int>(t), static_cast<int>(last));
+      t = last;
     }
     const int end = static_cast<int>(m.path.size()) - 1;
     reserve(cells.body(m.path.back().heading), m.path.back(), end, kForever);
