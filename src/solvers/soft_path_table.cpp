@@ -139,16 +139,21 @@ void SoftPathTable::collisionsHolding(int a, StateId s, int t, std::vector<int>&
   const CellSet& body = space_.cells(a).body(p.heading);
   const int last = lastMove();
   forBuckets(body, {p.x, p.y}, [&](int bucket) {
+    // Here an agent is marked only once met: one that misses standing at its end may still
+    // meet a while it moves, at another step.
+    auto met = [&](int b) {
+      stamp_[b] = query_;
+      out.push_back(b);
+    };
     for (int b : parked_[bucket]) {
-      if (stamp_[b] != query_ && hits(a, p, Action::Wait, b, static_cast<int>(paths_[b].size())))
-        out.push_back(b), stamp_[b] = query_;
+      const int end = static_cast<int>(paths_[b].size());
+      if (stamp_[b] != query_ && hits(a, p, Action::Wait, b, end)) met(b);
     }
     for (int step = t; step <= last; ++step) {
       const auto it = moving_.find(key(step, bucket));
       if (it == moving_.end()) continue;
       for (int b : it->second) {
-        if (stamp_[b] != query_ && hits(a, p, Action::Wait, b, step))
-          out.push_back(b), stamp_[b] = query_;
+        if (stamp_[b] != query_ && hits(a, p, Action::Wait, b, step)) met(b);
       }
     }
   });

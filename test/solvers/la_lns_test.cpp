@@ -3,6 +3,8 @@
 // independent validator.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "fleet_planner/core/plan_validator.h"
 #include "fleet_planner/core/random.h"
 #include "fleet_planner/solvers/registry.h"
@@ -65,6 +67,42 @@ TEST(SoftPathTable, PartnersAgreeWithConflictingPairs) {
     pairs_seen += static_cast<int>(from_table.size());
   }
   EXPECT_GT(pairs_seen, 50) << "the walks should collide often enough to test something";
+}
+
+// The agents met while holding a state from step t on (the soft search's goal test) are those
+// met by waiting there at some step from t until everybody has stopped, step by step.
+TEST(SoftPathTable, HoldingAgreesWithStepQueries) {
+  const World w(freeMap(12, 12), mixedRobots());
+  const Subproblem sub = allRobots(w);
+  const SearchSpace space(sub);
+  Rng rng(11);
+  int met_seen = 0;
+  for (int round = 0; round < 100; ++round) {
+    SoftPathTable table(space);
+    std::vector<StateId> places;  // robot 0 where the others pass, so that they meet
+    for (int a = 1; a < space.numAgents(); ++a) {
+      const StatePath walk = randomWalk(space, a, static_cast<int>(rng.uniformInt(0, 12)), rng);
+      table.insert(a, walk);
+      for (StateId q : walk) {
+        const StateId s = space.graph(0).id(space.graph(a).pose(q));
+        if (s != kNoState && space.distance(0, s) >= 0) places.push_back(s);
+      }
+    }
+    for (StateId s : places) {
+      const int t = static_cast<int>(rng.uniformInt(0, 12));
+      std::vector<int> holding;
+      table.collisionsHolding(0, s, t, holding);
+      std::sort(holding.begin(), holding.end());
+      std::vector<int> stepwise;
+      for (int step = t; step <= std::max(t, table.lastMove() + 1); ++step)
+        table.collisions(0, s, Action::Wait, step, stepwise);
+      std::sort(stepwise.begin(), stepwise.end());
+      stepwise.erase(std::unique(stepwise.begin(), stepwise.end()), stepwise.end());
+      ASSERT_EQ(holding, stepwise) << "round " << round << ", from step " << t;
+      met_seen += static_cast<int>(holding.size());
+    }
+  }
+  EXPECT_GT(met_seen, 100) << "the robots should meet often enough to test something";
 }
 
 // The per-bucket runs that the safe interval search reads say the same as a step-by-step query:
