@@ -1,6 +1,7 @@
 #pragma once
 // The dependency queries the decomposition algorithms ask, in terms of robots and SAT sets
 // (masks over robots, or over SATs: 2j = start of robot j, 2j + 1 = its target).
+#include <algorithm>
 #include <optional>
 #include <vector>
 
@@ -13,7 +14,8 @@ using Mask = std::vector<char>;
 
 class DependencyOracle {
  public:
-  DependencyOracle(const std::vector<RelationGraph>& graphs) : graphs_(graphs), n_(static_cast<int>(graphs.size())) {}
+  DependencyOracle(const std::vector<RelationGraph>& graphs)
+      : graphs_(graphs), n_(static_cast<int>(graphs.size())), witness_(graphs.size()) {}
 
   int robots() const { return n_; }
 
@@ -36,23 +38,34 @@ class DependencyOracle {
   }
 
   /// Whether agents(i, avail, avoid) would find a path (a cheaper search that ranks no paths).
-  bool agentPathExists(int i, const Mask& avail, const Mask& avoid) {
-    ++queries_;
-    return pathExists(graphs_[i], robotFilter(avail, avoid));
-  }
+  bool agentPathExists(int i, const Mask& avail, const Mask& avoid) { return exists(i, robotFilter(avail, avoid)); }
 
   /// Whether sats(i, avail, avoid) would find a path.
-  bool satPathExists(int i, const Mask& avail, const Mask& avoid) {
-    ++queries_;
-    return pathExists(graphs_[i], SatFilter{avail, avoid});
-  }
+  bool satPathExists(int i, const Mask& avail, const Mask& avoid) { return exists(i, SatFilter{avail, avoid}); }
 
   long long queries() const { return queries_; }
+  /// Existence queries answered by a graph search (the others by a remembered path).
+  long long searches() const { return searches_; }
 
  private:
   std::optional<std::vector<int>> query(int i, const SatFilter& f) {
     ++queries_;
-    return searchPathSats(graphs_[i], f);
+    auto sats = searchPathSats(graphs_[i], f);
+    if (sats) witness_[i] = *sats;
+    return sats;
+  }
+  // The decomposition asks the same robot many times with slightly different filters: the last
+  // path found for it answers "yes" without a search whenever the filter passes all its SATs.
+  bool exists(int i, const SatFilter& f) {
+    ++queries_;
+    if (const auto& w = witness_[i]; w && std::all_of(w->begin(), w->end(), [&](int s) { return f.passes(s); })) {
+      return true;
+    }
+    ++searches_;
+    std::vector<int> found;
+    if (!pathExists(graphs_[i], f, &found)) return false;
+    witness_[i] = std::move(found);
+    return true;
   }
   // Masks over robots as a filter over their SATs (empty masks stay empty: no restriction).
   SatFilter robotFilter(const Mask& avail, const Mask& avoid) const {
@@ -69,7 +82,9 @@ class DependencyOracle {
 
   const std::vector<RelationGraph>& graphs_;
   int n_;
+  std::vector<std::optional<std::vector<int>>> witness_;  // SATs of the last path found per robot
   long long queries_ = 0;
+  long long searches_ = 0;
 };
 
 inline Mask maskOf(const std::vector<int>& robots, int n) {

@@ -19,29 +19,48 @@ bool passable(const RelationGraph& r, const SatFilter& filter, int c) {
   return true;
 }
 
+// The SATs (ascending, the robot's own left out) of the components on the path that `parent`
+// links from r.target back to r.start (parent -1).
+std::vector<int> pathSats(const RelationGraph& r, const std::vector<int>& parent) {
+  const ComponentGraph& g = *r.graph;
+  std::vector<int> sats;
+  for (int c = r.target; c >= 0; c = parent[c]) {
+    for (int k = g.sat_begin[c]; k < g.sat_begin[c + 1]; ++k) {
+      if (g.sats[k] / 2 != r.robot) sats.push_back(g.sats[k]);
+    }
+  }
+  std::sort(sats.begin(), sats.end());
+  sats.erase(std::unique(sats.begin(), sats.end()), sats.end());
+  return sats;
+}
+
 }  // namespace
 
-bool pathExists(const RelationGraph& r, const SatFilter& filter) {
+bool pathExists(const RelationGraph& r, const SatFilter& filter, std::vector<int>* witness) {
   if (r.start < 0 || r.target < 0 || !passable(r, filter, r.start) || !passable(r, filter, r.target)) return false;
-  if (r.start == r.target) return true;
   const ComponentGraph& g = *r.graph;
   // Depth-first; a component is judged once, when first reached.
-  std::vector<char> seen(static_cast<std::size_t>(g.numComponents()), 0);
+  std::vector<int> parent(static_cast<std::size_t>(g.numComponents()), -2);  // -2: unseen
   std::vector<int> stack{r.start};
-  seen[r.start] = 1;
-  while (!stack.empty()) {
+  parent[r.start] = -1;
+  bool found = r.start == r.target;
+  while (!found && !stack.empty()) {
     const int c = stack.back();
     stack.pop_back();
     for (int k = g.edge_begin[c]; k < g.edge_begin[c + 1]; ++k) {
       const int next = g.edges[k];
-      if (seen[next]) continue;
-      seen[next] = 1;
+      if (parent[next] != -2) continue;
+      parent[next] = c;
       if (!passable(r, filter, next)) continue;
-      if (next == r.target) return true;
+      if (next == r.target) {
+        found = true;
+        break;
+      }
       stack.push_back(next);
     }
   }
-  return false;
+  if (found && witness) *witness = pathSats(r, parent);
+  return found;
 }
 
 std::optional<std::vector<int>> searchPathSats(const RelationGraph& r, const SatFilter& filter) {
@@ -90,15 +109,7 @@ std::optional<std::vector<int>> searchPathSats(const RelationGraph& r, const Sat
     }
   }
   if (dist[r.target] == kInf) return std::nullopt;
-  std::vector<int> sats;
-  for (int c = r.target; c >= 0; c = parent[c]) {
-    for (int k = g.sat_begin[c]; k < g.sat_begin[c + 1]; ++k) {
-      if (g.sats[k] / 2 != r.robot) sats.push_back(g.sats[k]);
-    }
-  }
-  std::sort(sats.begin(), sats.end());
-  sats.erase(std::unique(sats.begin(), sats.end()), sats.end());
-  return sats;
+  return pathSats(r, parent);
 }
 
 }  // namespace fleet_planner

@@ -395,7 +395,7 @@ bool refines(const Decomposition& fine, const Decomposition& coarse, int n) {
 }
 
 // pathExists answers the existence queries of the decomposition: it must agree with the ranked
-// search on whether a path exists, for any filter.
+// search on whether a path exists, for any filter, and the path it reports must be one.
 TEST(DependencySearch, PathExistsAgreesWithTheRankedSearch) {
   int found = 0, none = 0;
   for (std::uint64_t seed = 0; seed < 200; ++seed) {
@@ -420,8 +420,17 @@ TEST(DependencySearch, PathExistsAgreesWithTheRankedSearch) {
           for (char& a : f.avoided) a = rng.uniform01() < 0.3;
         }
         const bool ranked = searchPathSats(r, f).has_value();
-        ASSERT_EQ(pathExists(r, f), ranked) << "seed " << seed << ", robot " << r.robot << ", round " << round;
+        std::vector<int> witness;
+        ASSERT_EQ(pathExists(r, f, &witness), ranked) << "seed " << seed << ", robot " << r.robot << ", round " << round;
         (ranked ? found : none) += 1;
+        if (!ranked) continue;
+        // The witness (what the decomposition remembers to skip later searches) names every SAT
+        // of the path found: each passes the filter, and allowing only them still leaves a path.
+        for (int s : witness) ASSERT_TRUE(f.passes(s)) << "seed " << seed << ", robot " << r.robot << ", SAT " << s;
+        SatFilter only;
+        only.allowed.assign(sats, 0);
+        for (int s : witness) only.allowed[s] = 1;
+        ASSERT_TRUE(pathExists(r, only)) << "seed " << seed << ", robot " << r.robot << ", round " << round;
       }
     }
   }

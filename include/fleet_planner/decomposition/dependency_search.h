@@ -27,7 +27,9 @@ struct SatFilter {
 std::optional<std::vector<int>> searchPathSats(const RelationGraph& graph, const SatFilter& filter);
 
 /// Whether searchPathSats would find a path (`has_value()`), without ranking paths: a plain
-/// graph search, for the queries that only ask whether a robot can avoid some SATs.
-bool pathExists(const RelationGraph& graph, const SatFilter& filter);
+/// graph search, for the queries that only ask whether a robot can avoid some SATs. When a path
+/// exists and `witness` is given, it receives the SATs (ascending) of the path found: any filter
+/// that passes all of them has a path too.
+bool pathExists(const RelationGraph& graph, const SatFilter& filter, std::vector<int>* witness = nullptr);
 
 }  // namespace fleet_planner
