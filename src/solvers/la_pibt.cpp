@@ -9,7 +9,61 @@
 namespace fleet_planner {
 
 LaPibt::LaPibt(const SearchSpace& space, std::uint64_t seed)
-    : space_(space), rng_(seed), chosen_(space.numAgents()), assigned_(space.numAgents()) {}
+    : space_(space),
+      rng_(seed),
+      reach_(space.numAgents()),
+      stamp_(space.numAgents(), 0),
+      chosen_(space.numAgents()),
+      assigned_(space.numAgents()) {
+  if (space.numAgents() == 0) return;
+  bx_ = (space.graph(0).width() + kBucketCells - 1) / kBucketCells;
+  by_ = (space.graph(0).height() + kBucketCells - 1) / kBucketCells;
+  near_.resize(static_cast<std::size_t>(bx_) * by_);
+  for (int a = 0; a < space.numAgents(); ++a) {
+    int r = 0;
+    while (r * r < space.cells(a).maxNormSq()) ++r;
+    reach_[a] = r;
+  }
+}
+
+void LaPibt::indexNear(const Config& current) {
+  for (int bucket : filled_) near_[bucket].clear();
+  filled_.clear();
+  auto bucketX = [&](int x) { return std::clamp(x / kBucketCells, 0, bx_ - 1); };
+  auto bucketY = [&](int y) { return std::clamp(y / kBucketCells, 0, by_ - 1); };
+  for (int b = 0; b < space_.numAgents(); ++b) {
+    const GridPose q = space_.graph(b).pose(current[b]);
+    const int r = reach_[b];
+    for (int y = bucketY(q.y - r); y <= bucketY(q.y + r); ++y) {
+      for (int x = bucketX(q.x - r); x <= bucketX(q.x + r); ++x) {
+        std::vector<int>& agents = near_[y * bx_ + x];
+        if (agents.empty()) filled_.push_back(y * bx_ + x);
+        agents.push_back(b);
+      }
+    }
+  }
+}
+
+template <class F>
+void LaPibt::forNear(int a, const CellSet& set, Cell origin, F&& f) const {
+  if (set.empty()) return;
+  if (++query_ == 0) {  // wrapped: forget every stamp
+    std::fill(stamp_.begin(), stamp_.end(), 0);
+    query_ = 1;
+  }
+  stamp_[a] = query_;
+  auto bucketX = [&](int x) { return std::clamp(x / kBucketCells, 0, bx_ - 1); };
+  auto bucketY = [&](int y) { return std::clamp(y / kBucketCells, 0, by_ - 1); };
+  for (int y = bucketY(origin.y + set.minY()); y <= bucketY(origin.y + set.maxY()); ++y) {
+    for (int x = bucketX(origin.x + set.minX()); x <= bucketX(origin.x + set.maxX()); ++x) {
+      for (int b : near_[y * bx_ + x]) {
+        if (stamp_[b] == query_) continue;
+        stamp_[b] = query_;
+        f(b);
+      }
+    }
+  }
+}
 
 std::vector<StateId> LaPibt::candidates(int a, StateId s) const {
   std::vector<StateId> out{s};
@@ -22,25 +76,27 @@ std::vector<StateId> LaPibt::candidates(int a, StateId s) const {
 bool LaPibt::fits(int a, StateId from, Action action, const Config& current) const {
   const GridPose p = space_.graph(a).pose(from);
   const FootprintCells& cells = space_.cells(a);
-  for (int b = 0; b < space_.numAgents(); ++b) {
-    if (b == a) continue;
+  bool clear = true;
+  forNear(a, cells.swept(p.heading, action), {p.x, p.y}, [&](int b) {
+    if (!clear) return;
     const GridPose q = space_.graph(b).pose(current[b]);
     // An agent still to move sweeps at least its current footprint, whatever it does.
     const Action other = assigned_[b] ? chosen_[b] : Action::Wait;
-    if (sweepsOverlap(cells, p, action, space_.cells(b), q, other)) return false;
-  }
-  return true;
+    if (sweepsOverlap(cells, p, action, space_.cells(b), q, other)) clear = false;
+  });
+  return clear;
 }
 
 std::vector<int> LaPibt::blockers(int a, StateId from, Action action, const Config& current) const {
   std::vector<int> out;
   const GridPose p = space_.graph(a).pose(from);
-  for (int b = 0; b < space_.numAgents(); ++b) {
-    if (b == a || assigned_[b]) continue;
+  forNear(a, space_.cells(a).swept(p.heading, action), {p.x, p.y}, [&](int b) {
+    if (assigned_[b]) return;
     if (sweepsOverlap(space_.cells(a), p, action, space_.cells(b), space_.graph(b).pose(current[b]), Action::Wait)) {
       out.push_back(b);
     }
-  }
+  });
+  std::sort(out.begin(), out.end());  // agent order, whatever the buckets' order
   return out;
 }
 
@@ -140,6 +196,7 @@ bool LaPibt::generate(const Config& current, const std::vector<std::pair<int, St
   const int n = space_.numAgents();
   next.assign(n, kNoState);
   std::fill(assigned_.begin(), assigned_.end(), false);
+  indexNear(current);
   for (const auto& [a, s] : fixed) {
     const Action action = stepAction(space_.graph(a), current[a], s);
     if (assigned_[a] || !fits(a, current[a], action, current)) return false;

@@ -10,6 +10,7 @@
 /// out of the cells its move would sweep (a turn, for a robot that must turn before it can
 /// drive away), while it waits; the way opens in the next steps. Waiting always fits, so a configuration is
 /// produced unless the fixed moves clash.
+#include <cstdint>
 #include <vector>
 
 #include "fleet_planner/core/random.h"
@@ -34,6 +35,13 @@ class LaPibt {
   Rng& rng() { return rng_; }
 
  private:
+  // Buckets of kBucketCells x kBucketCells map cells, each listing the agents that could sweep
+  // one of its cells in the next step from their current state, built once per configuration:
+  // fits() and blockers() then check the agents near a motion, not the whole fleet.
+  void indexNear(const Config& current);
+  // Calls f(b) once for every agent other than a that may sweep a cell of `set` at `origin`.
+  template <class F>
+  void forNear(int a, const CellSet& set, Cell origin, F&& f) const;
   bool fits(int a, StateId from, Action action, const Config& current) const;
   // Assigns agent a (and, through pushes, agents blocking it). `avoid`: the state the pusher
   // wants next (kNoState: none), `pusher` its agent; a must end clear of the pusher's sweep to
@@ -46,8 +54,16 @@ class LaPibt {
   static constexpr int kEscapeDepth = 8;
   static constexpr std::size_t kEscapeStates = 4096;  // bound on one escape search
 
+  static constexpr int kBucketCells = 8;
+
   const SearchSpace& space_;
   Rng rng_;
+  int bx_ = 1, by_ = 1;                      // buckets per row, rows
+  std::vector<int> reach_;                   // per agent: cells any sweep reaches from the pose cell
+  std::vector<std::vector<int>> near_;       // bucket -> agents
+  std::vector<int> filled_;                  // buckets with agents (to clear them)
+  mutable std::vector<std::uint32_t> stamp_;  // dedup of forNear
+  mutable std::uint32_t query_ = 0;
   std::vector<Action> chosen_;  // action of each assigned agent this step
   std::vector<bool> assigned_;  // assigned, or being assigned (then counted as waiting)
 };
