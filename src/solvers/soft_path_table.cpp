@@ -60,16 +60,20 @@ void SoftPathTable::index(int a, bool on) {
     const CellSet& swept = space_.cells(a).swept(p.heading, act);
     const Bucket span = bucketsOf(swept, {p.x, p.y});
     forBuckets(swept, {p.x, p.y}, [&](int bucket) {
-      std::vector<int>& agents = moving_[key(t, bucket)];
-      edit(agents);
-      if (agents.empty()) moving_.erase(key(t, bucket));
+      std::vector<Motion>& motions = moving_[key(t, bucket)];
+      if (on) {
+        motions.push_back({a, p, act});
+      } else {
+        motions.erase(std::find_if(motions.begin(), motions.end(), [a](const Motion& m) { return m.agent == a; }));
+      }
+      if (motions.empty()) moving_.erase(key(t, bucket));
       std::vector<Run>& runs = by_bucket_[bucket];
       if (!on) {
         touched.push_back(bucket);
       } else if (same && !runs.empty() && runs.back().agent == a && runs.back().last == t - 1) {
         runs.back().last = t;
       } else {
-        runs.push_back({t, t, a, span.x0, span.y0});
+        runs.push_back({t, t, a, span.x0, span.y0, p, act});
       }
     });
   }
@@ -124,7 +128,10 @@ void SoftPathTable::collisions(int a, StateId s, Action action, int t,
       if (firstVisit(b) && hits(a, p, action, b, t)) out.push_back(b);
     };
     if (auto it = moving_.find(key(t, bucket)); it != moving_.end()) {
-      for (int b : it->second) check(b);
+      for (const Motion& m : it->second) {
+        if (firstVisit(m.agent) && sweepsOverlap(space_.cells(a), p, action, space_.cells(m.agent), m.pose, m.action))
+          out.push_back(m.agent);
+      }
     }
     for (int b : parked_[bucket]) {
       if (t + 1 >= static_cast<int>(paths_[b].size())) check(b);
@@ -152,8 +159,10 @@ void SoftPathTable::collisionsHolding(int a, StateId s, int t, std::vector<int>&
     for (int step = t; step <= last; ++step) {
       const auto it = moving_.find(key(step, bucket));
       if (it == moving_.end()) continue;
-      for (int b : it->second) {
-        if (stamp_[b] != query_ && hits(a, p, Action::Wait, b, step)) met(b);
+      for (const Motion& m : it->second) {
+        if (stamp_[m.agent] != query_ &&
+            sweepsOverlap(space_.cells(a), p, Action::Wait, space_.cells(m.agent), m.pose, m.action))
+          met(m.agent);
       }
     }
   });
@@ -174,7 +183,9 @@ void SoftPathTable::unsafeRuns(int a, StateId s, Action action,
       // A motion and the query share a rectangle of buckets: check the pair in its first one
       // only. Every step of a run is the same motion: one check answers for all of them.
       if (x != std::max(span.x0, r.x0) || y != std::max(span.y0, r.y0)) continue;
-      if (r.agent != a && hits(a, p, action, r.agent, r.first)) runs.emplace_back(r.first, r.last);
+      if (r.agent != a && sweepsOverlap(space_.cells(a), p, action, space_.cells(r.agent), r.pose, r.action)) {
+        runs.emplace_back(r.first, r.last);
+      }
     }
     for (int b : parked_[bucket]) {
       const int from = static_cast<int>(paths_[b].size()) - 1;

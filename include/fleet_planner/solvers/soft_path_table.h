@@ -68,12 +68,19 @@ class SoftPathTable {
   const SearchSpace& space_;
   int width_, height_, bx_, by_, buckets_;
   std::vector<StatePath> paths_;
-  std::unordered_map<std::uint64_t, std::vector<int>> moving_;  // (step, bucket) -> agents moving
+  struct Motion {
+    int agent;
+    GridPose pose;  // where the agent is at the step's start
+    Action action;  // what it does during the step
+  };
+  std::unordered_map<std::uint64_t, std::vector<Motion>> moving_;  // (step, bucket) -> motions
   std::vector<std::vector<int>> parked_;                        // bucket -> agents at their end
   struct Run {
     int first, last;  // steps of one motion repeated (a wait), or a single step
     int agent;
     int x0, y0;  // the motion's first bucket (column, row)
+    GridPose pose;  // the motion itself, so that a query needs not look it up in the path
+    Action action;
   };
   std::vector<std::vector<Run>> by_bucket_;   // bucket -> the motions that touch it
   mutable std::vector<std::uint32_t> stamp_;  // dedup of query results
