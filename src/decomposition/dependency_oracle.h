@@ -44,8 +44,6 @@ class DependencyOracle {
   bool satPathExists(int i, const Mask& avail, const Mask& avoid) { return exists(i, SatFilter{avail, avoid}); }
 
   long long queries() const { return queries_; }
-  /// Existence queries answered by a graph search (the others by a remembered path).
-  long long searches() const { return searches_; }
 
  private:
   std::optional<std::vector<int>> query(int i, const SatFilter& f) {
@@ -61,7 +59,6 @@ class DependencyOracle {
     if (const auto& w = witness_[i]; w && std::all_of(w->begin(), w->end(), [&](int s) { return f.passes(s); })) {
       return true;
     }
-    ++searches_;
     std::vector<int> found;
     if (!pathExists(graphs_[i], f, &found)) return false;
     witness_[i] = std::move(found);
@@ -84,7 +81,6 @@ class DependencyOracle {
   int n_;
   std::vector<std::optional<std::vector<int>>> witness_;  // SATs of the last path found per robot
   long long queries_ = 0;
-  long long searches_ = 0;
 };
 
 inline Mask maskOf(const std::vector<int>& robots, int n) {

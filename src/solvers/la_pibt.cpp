@@ -29,8 +29,6 @@ LaPibt::LaPibt(const SearchSpace& space, std::uint64_t seed)
 void LaPibt::indexNear(const Config& current) {
   for (int bucket : filled_) near_[bucket].clear();
   filled_.clear();
-  auto bucketX = [&](int x) { return std::clamp(x / kBucketCells, 0, bx_ - 1); };
-  auto bucketY = [&](int y) { return std::clamp(y / kBucketCells, 0, by_ - 1); };
   for (int b = 0; b < space_.numAgents(); ++b) {
     const GridPose q = space_.graph(b).pose(current[b]);
     const int r = reach_[b];
@@ -52,8 +50,6 @@ void LaPibt::forNear(int a, const CellSet& set, Cell origin, F&& f) const {
     query_ = 1;
   }
   stamp_[a] = query_;
-  auto bucketX = [&](int x) { return std::clamp(x / kBucketCells, 0, bx_ - 1); };
-  auto bucketY = [&](int y) { return std::clamp(y / kBucketCells, 0, by_ - 1); };
   for (int y = bucketY(origin.y + set.minY()); y <= bucketY(origin.y + set.maxY()); ++y) {
     for (int x = bucketX(origin.x + set.minX()); x <= bucketX(origin.x + set.maxX()); ++x) {
       for (int b : near_[y * bx_ + x]) {

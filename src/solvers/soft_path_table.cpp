@@ -105,10 +105,15 @@ int SoftPathTable::lastMove() const {
   return last;
 }
 
+bool SoftPathTable::meets(int a, const GridPose& p, Action action, int b, const GridPose& q,
+                          Action b_action) const {
+  return sweepsOverlap(space_.cells(a), p, action, space_.cells(b), q, b_action);
+}
+
 bool SoftPathTable::hits(int a, const GridPose& p, Action action, int b, int t) const {
   const StateGraph& g = space_.graph(b);
   const StateId s = stateAt(paths_[b], t), n = stateAt(paths_[b], t + 1);
-  return sweepsOverlap(space_.cells(a), p, action, space_.cells(b), g.pose(s), stepAction(g, s, n));
+  return meets(a, p, action, b, g.pose(s), stepAction(g, s, n));
 }
 
 bool SoftPathTable::firstVisit(int b) const {
@@ -129,8 +134,7 @@ void SoftPathTable::collisions(int a, StateId s, Action action, int t,
     };
     if (auto it = moving_.find(key(t, bucket)); it != moving_.end()) {
       for (const Motion& m : it->second) {
-        if (firstVisit(m.agent) && sweepsOverlap(space_.cells(a), p, action, space_.cells(m.agent), m.pose, m.action))
-          out.push_back(m.agent);
+        if (firstVisit(m.agent) && meets(a, p, action, m.agent, m.pose, m.action)) out.push_back(m.agent);
       }
     }
     for (int b : parked_[bucket]) {
@@ -160,9 +164,7 @@ void SoftPathTable::collisionsHolding(int a, StateId s, int t, std::vector<int>&
       const auto it = moving_.find(key(step, bucket));
       if (it == moving_.end()) continue;
       for (const Motion& m : it->second) {
-        if (stamp_[m.agent] != query_ &&
-            sweepsOverlap(space_.cells(a), p, Action::Wait, space_.cells(m.agent), m.pose, m.action))
-          met(m.agent);
+        if (stamp_[m.agent] != query_ && meets(a, p, Action::Wait, m.agent, m.pose, m.action)) met(m.agent);
       }
     }
   });
@@ -183,9 +185,7 @@ void SoftPathTable::unsafeRuns(int a, StateId s, Action action,
       // A motion and the query share a rectangle of buckets: check the pair in its first one
       // only. Every step of a run is the same motion: one check answers for all of them.
       if (x != std::max(span.x0, r.x0) || y != std::max(span.y0, r.y0)) continue;
-      if (r.agent != a && sweepsOverlap(space_.cells(a), p, action, space_.cells(r.agent), r.pose, r.action)) {
-        runs.emplace_back(r.first, r.last);
-      }
+      if (r.agent != a && meets(a, p, action, r.agent, r.pose, r.action)) runs.emplace_back(r.first, r.last);
     }
     for (int b : parked_[bucket]) {
       const int from = static_cast<int>(paths_[b].size()) - 1;

@@ -10,6 +10,7 @@
 /// out of the cells its move would sweep (a turn, for a robot that must turn before it can
 /// drive away), while it waits; the way opens in the next steps. Waiting always fits, so a configuration is
 /// produced unless the fixed moves clash.
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -42,6 +43,9 @@ class LaPibt {
   // Calls f(b) once for every agent other than a that may sweep a cell of `set` at `origin`.
   template <class F>
   void forNear(int a, const CellSet& set, Cell origin, F&& f) const;
+  // Bucket column (row) of map column x (row y), clamped to the map's buckets.
+  int bucketX(int x) const { return std::clamp(x / kBucketCells, 0, bx_ - 1); }
+  int bucketY(int y) const { return std::clamp(y / kBucketCells, 0, by_ - 1); }
   bool fits(int a, StateId from, Action action, const Config& current) const;
   // Assigns agent a (and, through pushes, agents blocking it). `avoid`: the state the pusher
   // wants next (kNoState: none), `pusher` its agent; a must end clear of the pusher's sweep to

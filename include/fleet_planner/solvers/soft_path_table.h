@@ -60,6 +60,8 @@ class SoftPathTable {
   void forBuckets(const CellSet& set, Cell origin, F&& f) const;
   // Adds (on = true) or removes the entries of a's path.
   void index(int a, bool on);
+  // a doing `action` from pose p collides with b doing `b_action` from pose q in the same step.
+  bool meets(int a, const GridPose& p, Action action, int b, const GridPose& q, Action b_action) const;
   // a doing `action` from pose p during step t collides with b's motion during that step.
   bool hits(int a, const GridPose& p, Action action, int b, int t) const;
   // True the first time agent b is met in the current query (query_).
