@@ -22,7 +22,8 @@ SoftPathTable::SoftPathTable(const SearchSpace& space)
       buckets_(bx_ * by_),
       paths_(space.numAgents()),
       parked_(buckets_),
-      by_bucket_(buckets_),
+      cell_spans_(static_cast<std::size_t>(width_) * height_),
+      agent_runs_(space.numAgents()),
       stamp_(space.numAgents(), 0) {}
 
 SoftPathTable::Bucket SoftPathTable::bucketsOf(const CellSet& set, Cell origin) const {
@@ -41,6 +42,16 @@ void SoftPathTable::forBuckets(const CellSet& set, Cell origin, F&& f) const {
   }
 }
 
+template <class F>
+void SoftPathTable::forCells(const CellSet& set, Cell origin, F&& f) const {
+  for (const CellSet::Run& r : set.runs()) {
+    const int y = origin.y + r.dy;
+    if (y < 0 || y >= height_) continue;
+    const int x0 = std::max(origin.x + r.x0, 0), x1 = std::min(origin.x + r.x1, width_ - 1);
+    for (int x = x0; x <= x1; ++x) f(y * width_ + x);
+  }
+}
+
 void SoftPathTable::index(int a, bool on) {
   const StatePath& path = paths_[a];
   const StateGraph& g = space_.graph(a);
@@ -51,14 +62,22 @@ void SoftPathTable::index(int a, bool on) {
       agents.erase(std::find(agents.begin(), agents.end(), a));
     }
   };
-  std::vector<int> touched;  // buckets whose runs name a (removal)
+  // The steps during which a sweeps a cell, one span per stretch of consecutive steps.
+  std::vector<int> touched;  // cells whose spans name a (removal)
+  auto span = [&](int cell, int t, int last) {
+    std::vector<Span>& spans = cell_spans_[cell];
+    if (!on) {
+      touched.push_back(cell);
+    } else if (!spans.empty() && spans.back().agent == a && spans.back().last == t - 1) {
+      spans.back().last = last;
+    } else {
+      spans.push_back({t, last, a});
+    }
+  };
   for (int t = 0; t + 1 < static_cast<int>(path.size()); ++t) {
     const GridPose p = g.pose(path[t]);
     const Action act = stepAction(g, path[t], path[t + 1]);
-    // A wait after a wait at the same state is the same motion: it extends the bucket's run.
-    const bool same = act == Action::Wait && t > 0 && path[t - 1] == path[t];
     const CellSet& swept = space_.cells(a).swept(p.heading, act);
-    const Bucket span = bucketsOf(swept, {p.x, p.y});
     forBuckets(swept, {p.x, p.y}, [&](int bucket) {
       std::vector<Motion>& motions = moving_[key(t, bucket)];
       if (on) {
@@ -67,26 +86,21 @@ void SoftPathTable::index(int a, bool on) {
         motions.erase(std::find_if(motions.begin(), motions.end(), [a](const Motion& m) { return m.agent == a; }));
       }
       if (motions.empty()) moving_.erase(key(t, bucket));
-      std::vector<Run>& runs = by_bucket_[bucket];
-      if (!on) {
-        touched.push_back(bucket);
-      } else if (same && !runs.empty() && runs.back().agent == a && runs.back().last == t - 1) {
-        runs.back().last = t;
-      } else {
-        runs.push_back({t, t, a, span.x0, span.y0, p, act});
-      }
     });
-  }
-  std::sort(touched.begin(), touched.end());
-  touched.erase(std::unique(touched.begin(), touched.end()), touched.end());
-  for (int bucket : touched) {
-    std::vector<Run>& runs = by_bucket_[bucket];
-    runs.erase(std::remove_if(runs.begin(), runs.end(), [a](const Run& r) { return r.agent == a; }),
-               runs.end());
+    forCells(swept, {p.x, p.y}, [&](int cell) { span(cell, t, t); });
   }
   const GridPose end = g.pose(path.back());
-  forBuckets(space_.cells(a).body(end.heading), {end.x, end.y},
-             [&](int bucket) { edit(parked_[bucket]); });
+  const CellSet& body = space_.cells(a).body(end.heading);
+  forBuckets(body, {end.x, end.y}, [&](int bucket) { edit(parked_[bucket]); });
+  const int parked_from = static_cast<int>(path.size()) - 1;
+  forCells(body, {end.x, end.y}, [&](int cell) { span(cell, parked_from, kNever); });
+  std::sort(touched.begin(), touched.end());
+  touched.erase(std::unique(touched.begin(), touched.end()), touched.end());
+  for (int cell : touched) {
+    std::vector<Span>& spans = cell_spans_[cell];
+    spans.erase(std::remove_if(spans.begin(), spans.end(), [a](const Span& r) { return r.agent == a; }),
+                spans.end());
+  }
 }
 
 void SoftPathTable::insert(int a, const StatePath& path) {
@@ -175,23 +189,34 @@ void SoftPathTable::unsafeRuns(int a, StateId s, Action action,
   runs.clear();
   forever_from = kNever;
   ++query_;
-  stamp_[a] = query_;
+  met_.clear();
   const GridPose p = space_.graph(a).pose(s);
-  const CellSet& swept = space_.cells(a).swept(p.heading, action);
-  const Bucket span = bucketsOf(swept, {p.x, p.y});
-  forBuckets(swept, {p.x, p.y}, [&](int bucket) {
-    const int x = bucket % bx_, y = bucket / bx_;
-    for (const Run& r : by_bucket_[bucket]) {
-      // A motion and the query share a rectangle of buckets: check the pair in its first one
-      // only. Every step of a run is the same motion: one check answers for all of them.
-      if (x != std::max(span.x0, r.x0) || y != std::max(span.y0, r.y0)) continue;
-      if (r.agent != a && meets(a, p, action, r.agent, r.pose, r.action)) runs.emplace_back(r.first, r.last);
-    }
-    for (int b : parked_[bucket]) {
-      const int from = static_cast<int>(paths_[b].size()) - 1;
-      if (from < forever_from && firstVisit(b) && hits(a, p, action, b, from)) forever_from = from;
+  // Neighbouring cells mostly hold the same pass of an agent, give or take a step: the spans
+  // of each agent are merged as they come, so the caller sorts one run per pass, not per cell.
+  forCells(space_.cells(a).swept(p.heading, action), {p.x, p.y}, [&](int cell) {
+    for (const Span& r : cell_spans_[cell]) {
+      if (r.agent == a) continue;
+      if (r.last == kNever) {
+        forever_from = std::min(forever_from, r.first);
+        continue;
+      }
+      std::vector<std::pair<int, int>>& mine = agent_runs_[r.agent];
+      if (firstVisit(r.agent)) {
+        mine.clear();
+        met_.push_back(r.agent);
+      }
+      bool merged = false;
+      for (auto& run : mine) {
+        if (r.first <= run.second + 1 && run.first <= r.last + 1) {
+          run = {std::min(run.first, r.first), std::max(run.second, r.last)};
+          merged = true;
+          break;
+        }
+      }
+      if (!merged) mine.emplace_back(r.first, r.last);
     }
   });
+  for (int b : met_) runs.insert(runs.end(), agent_runs_[b].begin(), agent_runs_[b].end());
 }
 
 std::vector<int> SoftPathTable::partners(int a, const StatePath& path) const {

@@ -105,7 +105,7 @@ TEST(SoftPathTable, HoldingAgreesWithStepQueries) {
   EXPECT_GT(met_seen, 100) << "the robots should meet often enough to test something";
 }
 
-// The per-bucket runs that the safe interval search reads say the same as a step-by-step query:
+// The per-cell spans that the safe interval search reads say the same as a step-by-step query:
 // for random placements and actions of one robot among random walks of the others (waits
 // included, so runs of several steps occur), a step is unsafe exactly when some run or the
 // "for good" bound covers it.

@@ -58,6 +58,9 @@ class SoftPathTable {
   }
   template <class F>
   void forBuckets(const CellSet& set, Cell origin, F&& f) const;
+  // Calls f(cell index) for every map cell of `set` placed at `origin`.
+  template <class F>
+  void forCells(const CellSet& set, Cell origin, F&& f) const;
   // Adds (on = true) or removes the entries of a's path.
   void index(int a, bool on);
   // a doing `action` from pose p collides with b doing `b_action` from pose q in the same step.
@@ -77,14 +80,16 @@ class SoftPathTable {
   };
   std::unordered_map<std::uint64_t, std::vector<Motion>> moving_;  // (step, bucket) -> motions
   std::vector<std::vector<int>> parked_;                        // bucket -> agents at their end
-  struct Run {
-    int first, last;  // steps of one motion repeated (a wait), or a single step
+  // Per map cell, the steps during which an agent sweeps it (waits and moves alike), one span
+  // per stretch of consecutive steps; last == kNever: the agent stands there at its end. The
+  // interval queries (unsafeRuns) read these: the cells of a motion, not every motion nearby.
+  struct Span {
+    int first, last;
     int agent;
-    int x0, y0;  // the motion's first bucket (column, row)
-    GridPose pose;  // the motion itself, so that a query needs not look it up in the path
-    Action action;
   };
-  std::vector<std::vector<Run>> by_bucket_;   // bucket -> the motions that touch it
+  std::vector<std::vector<Span>> cell_spans_;
+  mutable std::vector<std::vector<std::pair<int, int>>> agent_runs_;  // unsafeRuns' scratch
+  mutable std::vector<int> met_;                                     // its agents
   mutable std::vector<std::uint32_t> stamp_;  // dedup of query results
   mutable std::uint32_t query_ = 0;
 };
