@@ -9,6 +9,7 @@
 #include "fleet_planner/solvers/joint_path_search.h"
 #include "fleet_planner/solvers/joint_repair.h"
 #include "fleet_planner/solvers/neighborhood_growth.h"
+#include "fleet_planner/solvers/path_splice.h"
 #include "fleet_planner/solvers/registry.h"
 #include "fleet_planner/solvers/safe_interval_search.h"
 #include "fleet_planner/solvers/soft_path_search.h"
@@ -341,8 +342,39 @@ class LnsSearch {
     return others;
   }
 
+  // Replaces agent a's path in the table and its edges in the collision graph.
+  void replacePath(int a, const StatePath& path) {
+    table_.remove(a);
+    table_.insert(a, path);
+    for (int b : partners_[a])
+      partners_[b].erase(std::lower_bound(partners_[b].begin(), partners_[b].end(), a));
+    partners_[a].clear();
+    for (int b : table_.partners(a)) link(a, b);
+  }
+
+  // One local repair (path_splice.h) of a random collision of a random colliding agent, kept
+  // unless the delay it gives the rest of the path meets more agents than before.
+  void splice() {
+    std::vector<int> colliding;
+    for (int a = 0; a < n_; ++a) {
+      if (!partners_[a].empty()) colliding.push_back(a);
+    }
+    if (colliding.empty()) return;
+    const int a = pick(colliding);
+    const std::vector<int> starts = collisionStarts(space_, a, table_);
+    if (starts.empty()) return;
+    const SpliceResult r = spliceAround(space_, a, table_, pick(starts), /*delays=*/true,
+                                        problem_.deadline, options_.max_expansions_per_search);
+    stats_.low_level_expansions += r.expansions;
+    if (r.path && table_.partners(a, *r.path).size() <= partners_[a].size()) replacePath(a, *r.path);
+  }
+
   void repair() {
     ++stats_.high_level_nodes;
+    if (options_.splice) {
+      splice();
+      if (collidingPairs() == 0) return;
+    }
     size_ = growth_.next(collidingPairs());
     const Method method = chooseMethod();
     std::vector<int> group = method == kJoint ? knot() : neighborhood(method);

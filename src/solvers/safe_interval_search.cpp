@@ -1,6 +1,7 @@
 #include "fleet_planner/solvers/safe_interval_search.h"
 
 #include <algorithm>
+#include <cstdlib>
 #include <queue>
 #include <unordered_map>
 
@@ -105,16 +106,36 @@ class Sipp {
 
 }  // namespace
 
-SafeIntervalResult safeIntervalSearch(const SearchSpace& space, int a, const SoftPathTable& others,
-                                      const Deadline& deadline, long long max_expansions) {
+namespace {
+
+// Lower bound on the steps from s to `goal`: a move changes one coordinate by one cell, and a
+// different heading takes at least one rotation.
+int stepsBetween(const StateGraph& g, StateId s, StateId goal) {
+  const GridPose p = g.pose(s), q = g.pose(goal);
+  return std::abs(p.x - q.x) + std::abs(p.y - q.y) + (p.heading != q.heading ? 1 : 0);
+}
+
+// Earliest-arriving collision-free way of agent a from `from` at step t0 to `goal`: held for
+// good (t1 == kNever; `goal` is then a's target), or reached by step t1 and held until t1, or
+// reached later, by step t1 + max_delay.
+SafeIntervalResult searchBetween(const SearchSpace& space, int a, const SoftPathTable& others,
+                                 StateId from, int t0, StateId goal, int t1, int max_delay,
+                                 const Deadline& deadline, long long max_expansions) {
   SafeIntervalResult result;
   const StateGraph& g = space.graph(a);
-  const StateId start = space.start(a), target = space.target(a);
-  if (space.distance(a, start) < 0) return result;
+  if (space.distance(a, from) < 0) return result;
+  const bool forever = t1 == kNever;
   Sipp sipp(space, a, others);
-  const std::vector<Interval>& first = sipp.intervals(start);
-  if (first.empty() || first.front().first != 0) return result;  // someone sweeps the start at once
+  const std::vector<Interval>& first = sipp.intervals(from);
+  int first_interval = -1;
+  for (int i = 0; i < static_cast<int>(first.size()) && first_interval < 0; ++i) {
+    if (first[i].first <= t0 && (first[i].last == kNever || t0 <= first[i].last)) first_interval = i;
+  }
+  if (first_interval < 0) return result;  // someone sweeps `from` at t0
 
+  auto heuristic = [&](StateId s) {
+    return forever ? space.distance(a, s) : stepsBetween(g, s, goal);
+  };
   std::vector<Node> nodes;
   NodeTable best;  // (state, interval) -> node
   auto key = [](StateId s, int i) {
@@ -128,14 +149,16 @@ SafeIntervalResult safeIntervalSearch(const SearchSpace& space, int a, const Sof
   };
   std::priority_queue<int, std::vector<int>, decltype(worse)> open(worse);
   auto push = [&](StateId s, int interval, int arrival, int parent) {
+    const int f = arrival + heuristic(s);
+    if (!forever && f > t1 + max_delay) return;  // cannot reach the goal in time
     const std::uint64_t k = key(s, interval);
     const int* known = best.find(k);
     if (known != nullptr && nodes[*known].g <= arrival) return;
     best.set(k, static_cast<int>(nodes.size()));
-    nodes.push_back({s, interval, arrival, arrival + space.distance(a, s), parent});
+    nodes.push_back({s, interval, arrival, f, parent});
     open.push(static_cast<int>(nodes.size()) - 1);
   };
-  push(start, 0, 0, -1);
+  push(from, first_interval, t0, -1);
 
   while (!open.empty()) {
     if ((result.expansions & 255) == 0 && deadline.expired()) {
@@ -152,13 +175,17 @@ SafeIntervalResult safeIntervalSearch(const SearchSpace& space, int a, const Sof
     if (*best.find(key(node.s, node.interval)) != index) continue;
     ++result.expansions;
     const Interval here = sipp.intervals(node.s)[node.interval];
-    if (node.s == target && here.last == kNever) {
+    const bool arrived = forever ? here.last == kNever
+                                 : node.g >= t1 || here.last == kNever || here.last >= t1 - 1;
+    if (node.s == goal && arrived) {
       std::vector<int> chain;
       for (int i = index; i >= 0; i = nodes[i].parent) chain.push_back(i);
       std::reverse(chain.begin(), chain.end());
       for (std::size_t k = 0; k < chain.size(); ++k) {
         const Node& n = nodes[chain[k]];
-        const int until = k + 1 < chain.size() ? nodes[chain[k + 1]].g : n.g + 1;
+        const int until = k + 1 < chain.size() ? nodes[chain[k + 1]].g
+                          : forever                ? n.g + 1
+                                                   : std::max(t1, n.g) + 1;
         for (int t = n.g; t < until; ++t) result.path.push_back(n.s);
       }
       result.outcome = SafeIntervalResult::Outcome::Found;
@@ -180,6 +207,22 @@ SafeIntervalResult safeIntervalSearch(const SearchSpace& space, int a, const Sof
     });
   }
   return result;
+}
+
+}  // namespace
+
+SafeIntervalResult safeIntervalSearch(const SearchSpace& space, int a, const SoftPathTable& others,
+                                      const Deadline& deadline, long long max_expansions) {
+  return searchBetween(space, a, others, space.start(a), 0, space.target(a), kNever, 0, deadline,
+                       max_expansions);
+}
+
+SafeIntervalResult safeIntervalSegment(const SearchSpace& space, int a,
+                                       const SoftPathTable& others, StateId from, int t0,
+                                       StateId to, int t1, int max_delay,
+                                       const Deadline& deadline, long long max_expansions) {
+  if (t1 == SoftPathTable::kNever) to = space.target(a);
+  return searchBetween(space, a, others, from, t0, to, t1, max_delay, deadline, max_expansions);
 }
 
 }  // namespace fleet_planner

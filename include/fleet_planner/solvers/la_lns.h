@@ -45,6 +45,10 @@ struct LaLnsOptions {
   long long joint_search_nodes = 50'000;
   double joint_seconds = 0.5;
   long long joint_max_expansions = 100'000;
+  /// Before each repair, one local repair of a colliding agent (path_splice.h): a few steps of
+  /// its path around one of its collisions replanned collision-free, the rest kept (delayed if
+  /// need be).
+  bool splice = true;
 };
 
 class LaLns : public Solver {

@@ -27,4 +27,14 @@ struct SafeIntervalResult {
 SafeIntervalResult safeIntervalSearch(const SearchSpace& space, int a, const SoftPathTable& others,
                                       const Deadline& deadline, long long max_expansions);
 
+/// A collision-free piece of agent a's way, to splice into its path: from state `from` at step
+/// t0 to state `to`, reached by step t1 and held until t1, or reached at a step t1 + d with
+/// 0 < d <= max_delay (the path then holds the states at steps t0..t1 + d: d is the delay the
+/// rest of the way takes on), or, with t1 == SoftPathTable::kNever, to a's target, held for
+/// good (as safeIntervalSearch; the path then holds the states from t0 on). Earliest arrival.
+SafeIntervalResult safeIntervalSegment(const SearchSpace& space, int a,
+                                       const SoftPathTable& others, StateId from, int t0,
+                                       StateId to, int t1, int max_delay,
+                                       const Deadline& deadline, long long max_expansions);
+
 }  // namespace fleet_planner
