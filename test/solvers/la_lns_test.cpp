@@ -11,6 +11,7 @@
 #include "fleet_planner/solvers/safe_interval_search.h"
 #include "fleet_planner/solvers/soft_path_table.h"
 #include "fleet_planner/solvers/space_time_astar.h"
+#include "pocket_corridor.h"
 #include "solver_test_util.h"
 #include "test_maps.h"
 
@@ -151,17 +152,13 @@ TEST(SoftPathTable, UnsafeRunsAgreeWithStepQueries) {
 // the pocket before the runner reaches it, wait there until the runner has passed, and only
 // then drive to its target behind it; the wait is one node of the safe interval search.
 TEST(SafeIntervalSearch, WaitsInPocketUntilRunnerPassed) {
-  const World w(mapFromRows({"..............", "@@@@@@.@@@@@@@"}),
-                {dot("runner", {0, 0, 0}, {13, 0, 0}), dot("waiter", {7, 0, 1}, {10, 0, 0})});
-  const Subproblem sub = allRobots(w);
-  const SearchSpace space(sub);
-  SoftPathTable table(space);
-  const LowLevelResult runner = spaceTimeAStar(space, 0, AgentConstraints{}, Deadline::in(5.0));
-  ASSERT_EQ(runner.outcome, LowLevelResult::Outcome::Found);
-  table.insert(0, runner.path);
-  const SafeIntervalResult r = safeIntervalSearch(space, 1, table, Deadline::in(5.0), 100000);
+  const PocketCorridor c(dot("waiter", {7, 0, 1}, {10, 0, 0}));
+  const World& w = c.w;
+  const SearchSpace& space = c.space;
+  ASSERT_FALSE(c.runner.empty());
+  const SafeIntervalResult r = safeIntervalSearch(space, 1, c.table, Deadline::in(5.0), 100000);
   ASSERT_EQ(r.outcome, SafeIntervalResult::Outcome::Found);
-  std::vector<StatePath> paths{runner.path, r.path};
+  std::vector<StatePath> paths{c.runner, r.path};
   EXPECT_EQ(conflictingPairs(space, paths).size(), 0u);
   Plan plan;
   for (int a = 0; a < 2; ++a) {

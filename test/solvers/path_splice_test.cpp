@@ -10,6 +10,7 @@
 #include "fleet_planner/solvers/path_splice.h"
 #include "fleet_planner/solvers/safe_interval_search.h"
 #include "fleet_planner/solvers/space_time_astar.h"
+#include "pocket_corridor.h"
 #include "solver_test_util.h"
 #include "test_maps.h"
 
@@ -89,7 +90,9 @@ TEST(PathSplice, RepairedPathsKeepTheirEndsAndAvoidEveryoneWhereTheyChanged) {
             for (int k = r.rejoin; k < static_cast<int>(old.size()); ++k)
               ASSERT_EQ(path[k + r.delay], old[k]) << "round " << round << ", step " << k;
           }
-          if (!delays) EXPECT_EQ(r.delay, 0);
+          if (!delays) {
+            EXPECT_EQ(r.delay, 0);
+          }
           if (!delays) {
             const std::vector<int> after = table.partners(a, path);
             EXPECT_TRUE(std::includes(before.begin(), before.end(), after.begin(), after.end()))
@@ -114,17 +117,13 @@ bool pieceIsFree(const SearchSpace& space, int a, const SoftPathTable& table, co
 // A piece from a state at one step to a state at a later step: held until then when reached
 // early, or reached later by up to max_delay steps.
 TEST(SafeIntervalSegment, ReachesItsEndStateOnTimeOrWithinTheDelay) {
-  // A 1-wide corridor with a pocket at x = 6: the runner drives east through the whole corridor
-  // while the other robot drives west from x = 9 to x = 3 (6 steps alone); it must let the
-  // runner pass in the pocket, turn round there and come out, so it reaches x = 3 at step 12.
-  const World w(mapFromRows({"..............", "@@@@@@.@@@@@@@"}),
-                {dot("runner", {0, 0, 0}, {13, 0, 0}), dot("walker", {9, 0, 1}, {3, 0, 1})});
-  const Subproblem sub = allRobots(w);
-  const SearchSpace space(sub);
-  SoftPathTable table(space);
-  const LowLevelResult runner = spaceTimeAStar(space, 0, AgentConstraints{}, Deadline::in(5.0));
-  ASSERT_EQ(runner.outcome, LowLevelResult::Outcome::Found);
-  table.insert(0, runner.path);
+  // The runner drives east through the corridor while the walker drives west from x = 9 to
+  // x = 3 (6 steps alone): it must let the runner pass in the pocket, turn round there and come
+  // out, so it reaches x = 3 at step 12.
+  PocketCorridor c(dot("walker", {9, 0, 1}, {3, 0, 1}));
+  const SearchSpace& space = c.space;
+  const SoftPathTable& table = c.table;
+  ASSERT_FALSE(c.runner.empty());
   const StateId from = space.start(1), to = space.target(1);
   auto segment = [&](int t1, int max_delay) {
     return safeIntervalSegment(space, 1, table, from, 0, to, t1, max_delay, Deadline::in(5.0), 100000);
