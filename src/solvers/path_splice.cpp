@@ -72,7 +72,16 @@ SpliceResult spliceAround(const SearchSpace& space, int a, const SoftPathTable& 
     if (t1 != SoftPathTable::kNever) {
       result.rejoin = t1;
       result.delay = static_cast<int>(spliced.size()) - 1 - t1;
-      for (int k = t1 + 1; k <= last; ++k) spliced.push_back(old[k]);
+      // The old path's own waits take up the delay, where it has some: after them the path is
+      // back on its old timing.
+      int owed = result.delay;
+      for (int k = t1 + 1; k <= last; ++k) {
+        if (owed > 0 && old[k] == old[k - 1]) {
+          --owed;
+          continue;
+        }
+        spliced.push_back(old[k]);
+      }
     }
     result.path = std::move(spliced);
     return result;

@@ -21,8 +21,9 @@ std::vector<int> collisionStarts(const SearchSpace& space, int a, const SoftPath
 struct SpliceResult {
   std::optional<StatePath> path;  ///< the repaired path, if a window worked
   /// The step of the old path at which the piece rejoins it (-1: the piece ends at the target,
-  /// held), and how many steps later the new path is there: path[k + delay] == old[k] from
-  /// `rejoin` on.
+  /// held), and how many steps later the new path is there (path[rejoin + delay] ==
+  /// old[rejoin]). From there the new path follows the old one state by state, leaving out the
+  /// first `delay` of the old path's waits, so that it is back on the old timing after them.
   int rejoin = -1;
   int delay = 0;
   long long expansions = 0;
@@ -33,8 +34,8 @@ struct SpliceResult {
 /// its end (or at the target, held for good, where that is sooner) are tried in turn until one
 /// has a collision-free piece (at most `max_expansions` expansions each). With `delays`, a piece
 /// may also rejoin the path later than it left it, by up to the steps the window closes after
-/// the run: the rest of the path then keeps its moves but takes on that delay, so it may meet
-/// other agents than before.
+/// the run: the rest of the path then keeps its moves but runs late until its own waits have
+/// made up the delay, so it may meet other agents than before.
 SpliceResult spliceAround(const SearchSpace& space, int a, const SoftPathTable& table, int t,
                           bool delays, const Deadline& deadline, long long max_expansions);
 
