@@ -342,14 +342,15 @@ class LnsSearch {
     return others;
   }
 
-  // Replaces agent a's path in the table and its edges in the collision graph.
-  void replacePath(int a, const StatePath& path) {
+  // Replaces agent a's path in the table and its edges in the collision graph (`partners`:
+  // the agents the new path collides with).
+  void replacePath(int a, const StatePath& path, const std::vector<int>& partners) {
     table_.remove(a);
     table_.insert(a, path);
     for (int b : partners_[a])
       partners_[b].erase(std::lower_bound(partners_[b].begin(), partners_[b].end(), a));
     partners_[a].clear();
-    for (int b : table_.partners(a)) link(a, b);
+    for (int b : partners) link(a, b);
   }
 
   // One local repair (path_splice.h) of a random collision of a random colliding agent, kept
@@ -366,7 +367,9 @@ class LnsSearch {
     const SpliceResult r = spliceAround(space_, a, table_, pick(starts), /*delays=*/true,
                                         problem_.deadline, options_.max_expansions_per_search);
     stats_.low_level_expansions += r.expansions;
-    if (r.path && table_.partners(a, *r.path).size() <= partners_[a].size()) replacePath(a, *r.path);
+    if (!r.path) return;
+    const std::vector<int> partners = table_.partners(a, *r.path);
+    if (partners.size() <= partners_[a].size()) replacePath(a, *r.path, partners);
   }
 
   void repair() {

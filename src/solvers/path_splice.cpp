@@ -52,6 +52,7 @@ SpliceResult spliceAround(const SearchSpace& space, int a, const SoftPathTable& 
   while (end < until && collidesAt(space, a, table, end + 1, scratch)) ++end;
   constexpr int kBack[] = {2, 8, 32, 128};
   constexpr int kAhead[] = {8, 32, 128, 512};
+  int tried_t0 = -1, tried_t1 = -1;
   for (int w = 0; w < 4; ++w) {
     // The piece starts where the agent can wait: the search's first node is a safe interval.
     int t0 = std::max(0, t - kBack[w]);
@@ -59,6 +60,10 @@ SpliceResult spliceAround(const SearchSpace& space, int a, const SoftPathTable& 
     // A window reaching the path's end ends at the target, held for good.
     int t1 = end + kAhead[w];
     if (t1 >= last) t1 = SoftPathTable::kNever;
+    // Near the path's start or end, windows clip to the same one: it failed already.
+    if (t1 == SoftPathTable::kNever && t0 == tried_t0 && t1 == tried_t1) continue;
+    tried_t0 = t0;
+    tried_t1 = t1;
     const SafeIntervalResult r = safeIntervalSegment(space, a, table, stateAt(old, t0), t0,
                                                      stateAt(old, t1 == SoftPathTable::kNever ? last : t1),
                                                      t1, delays ? kAhead[w] : 0, deadline,

@@ -175,8 +175,8 @@ SafeIntervalResult searchBetween(const SearchSpace& space, int a, const SoftPath
     if (*best.find(key(node.s, node.interval)) != index) continue;
     ++result.expansions;
     const Interval here = sipp.intervals(node.s)[node.interval];
-    const bool arrived = forever ? here.last == kNever
-                                 : node.g >= t1 || here.last == kNever || here.last >= t1 - 1;
+    // Finite t1: the agent can wait here until t1 (an arrival after t1 lies in `here` too).
+    const bool arrived = forever ? here.last == kNever : here.last >= t1 - 1;
     if (node.s == goal && arrived) {
       std::vector<int> chain;
       for (int i = index; i >= 0; i = nodes[i].parent) chain.push_back(i);

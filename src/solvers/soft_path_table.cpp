@@ -130,6 +130,13 @@ bool SoftPathTable::hits(int a, const GridPose& p, Action action, int b, int t) 
   return meets(a, p, action, b, g.pose(s), stepAction(g, s, n));
 }
 
+void SoftPathTable::newQuery() const {
+  if (++query_ == 0) {  // wrapped: forget every stamp
+    std::fill(stamp_.begin(), stamp_.end(), 0);
+    query_ = 1;
+  }
+}
+
 bool SoftPathTable::firstVisit(int b) const {
   if (stamp_[b] == query_) return false;
   stamp_[b] = query_;
@@ -138,7 +145,7 @@ bool SoftPathTable::firstVisit(int b) const {
 
 void SoftPathTable::collisions(int a, StateId s, Action action, int t,
                                std::vector<int>& out) const {
-  ++query_;
+  newQuery();
   stamp_[a] = query_;
   const GridPose p = space_.graph(a).pose(s);
   forBuckets(space_.cells(a).swept(p.heading, action), {p.x, p.y}, [&](int bucket) {
@@ -158,7 +165,7 @@ void SoftPathTable::collisions(int a, StateId s, Action action, int t,
 }
 
 void SoftPathTable::collisionsHolding(int a, StateId s, int t, std::vector<int>& out) const {
-  ++query_;
+  newQuery();
   stamp_[a] = query_;
   const GridPose p = space_.graph(a).pose(s);
   const CellSet& body = space_.cells(a).body(p.heading);
@@ -188,7 +195,7 @@ void SoftPathTable::unsafeRuns(int a, StateId s, Action action,
                                std::vector<std::pair<int, int>>& runs, int& forever_from) const {
   runs.clear();
   forever_from = kNever;
-  ++query_;
+  newQuery();
   met_.clear();
   const GridPose p = space_.graph(a).pose(s);
   // Neighbouring cells mostly hold the same pass of an agent, give or take a step: the spans

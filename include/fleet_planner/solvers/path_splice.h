@@ -1,12 +1,13 @@
 #pragma once
 /// Local repair of one agent's path for LA-LNS (la_lns.h): the steps around one of its
 /// collisions are replanned collision-free (safe_interval_search.h) between two states of the
-/// path itself, and the rest of the path is kept as it is, step for step. The agents the new
-/// path collides with are therefore a subset of the old path's partners, with that collision
-/// gone. A robot that must wait a few steps for another one to pass, on a path of hundreds of
-/// steps, is repaired without replanning the whole path: the searches that replan whole paths
-/// around the others as soft obstacles run out of nodes there, on large maps, as soon as the
-/// detour costs more than a few steps.
+/// path itself, and the rest of the path is kept as it is, step for step. When the piece is on
+/// time, the agents the new path collides with are therefore a subset of the old path's
+/// partners, with that collision gone; a late piece delays the rest until the path's own waits
+/// make up for it. A robot that must wait a few steps for another one to pass, on a path of
+/// hundreds of steps, is repaired without replanning the whole path: the searches that replan
+/// whole paths around the others as soft obstacles run out of nodes there, on large maps, as
+/// soon as the detour costs more than a few steps.
 #include <optional>
 
 #include "fleet_planner/core/deadline.h"

@@ -67,6 +67,8 @@ class SoftPathTable {
   bool meets(int a, const GridPose& p, Action action, int b, const GridPose& q, Action b_action) const;
   // a doing `action` from pose p during step t collides with b's motion during that step.
   bool hits(int a, const GridPose& p, Action action, int b, int t) const;
+  // Starts a query: a new query_ stamp (all stamps cleared when the counter wraps).
+  void newQuery() const;
   // True the first time agent b is met in the current query (query_).
   bool firstVisit(int b) const;
 
