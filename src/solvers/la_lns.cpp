@@ -9,6 +9,7 @@
 #include "fleet_planner/solvers/joint_path_search.h"
 #include "fleet_planner/solvers/joint_repair.h"
 #include "fleet_planner/solvers/neighborhood_growth.h"
+#include "fleet_planner/solvers/ordered_repair.h"
 #include "fleet_planner/solvers/path_splice.h"
 #include "fleet_planner/solvers/registry.h"
 #include "fleet_planner/solvers/safe_interval_search.h"
@@ -288,8 +289,10 @@ class LnsSearch {
     return true;
   }
 
-  // Replans the group jointly around all others' paths: by LA-CBS within a small share of the
-  // time left (others hard), and if that finds nothing, for a small group and once the
+  // Replans the group jointly around all others' paths: first one after the other, in the
+  // group's order and then in reverse, with the members not yet replanned at their starts
+  // (ordered_repair.h: cheap, and collision-free if it works); then by LA-CBS within a small
+  // share of the time left (others hard), and if that finds nothing, for a small group and once the
   // neighbourhood has grown to the whole subproblem, by a joint search (joint_path_search.h;
   // others soft); false if neither found a plan. A joint search that exhausts the group's joint
   // space proves that the subproblem has no plan (proof_). The joint search waits for the deep
@@ -297,6 +300,14 @@ class LnsSearch {
   // 4-5 s of the 7 s that LA-LNS had for a 12-robot level of maze-128-128-10 K=40, which it
   // otherwise solves in that time.
   bool planTogether(const std::vector<int>& group) {
+    for (const std::vector<int>& order : {group, std::vector<int>(group.rbegin(), group.rend())}) {
+      const std::optional<std::vector<StatePath>> paths =
+          orderedRepair(space_, table_, order, problem_.deadline,
+                        options_.max_expansions_per_search, stats_.low_level_expansions);
+      if (!paths) continue;
+      for (std::size_t k = 0; k < order.size(); ++k) table_.insert(order[k], (*paths)[k]);
+      return true;
+    }
     const double seconds = std::min(options_.joint_seconds, problem_.deadline.remaining() / 4);
     const std::vector<StatePath> paths =
         jointRepair(space_, problem_, table_, group, seconds, options_.joint_max_expansions,

@@ -14,9 +14,11 @@
 /// number of colliding pairs, the neighbourhood doubles until one does; at the size of the
 /// subproblem every agent is replanned, colliding or not: a knot of a few pairs in a packed level
 /// may need all of its robots to move differently. A fourth kind of step replans a colliding
-/// agent and up to two of its partners together around everybody else, by LA-CBS
-/// (joint_repair.h) and, where that fails, by a joint search (joint_path_search.h), for the
-/// knots that one-by-one replanning cannot untie.
+/// agent and up to two of its partners together around everybody else, for the knots that
+/// one-by-one replanning cannot untie: one after the other, collision-free, with the ones not
+/// yet replanned at their starts, in a random order and in reverse (ordered_repair.h); where
+/// that fails, by LA-CBS (joint_repair.h); and where that fails too, once the neighbourhood
+/// has grown to the whole subproblem, by a joint search (joint_path_search.h).
 ///
 /// Beyond the paper's backends. Serial: static footprints and the timed paths of other
 /// subproblems are hard obstacles. Incomplete: the only proof it gives is a knot whose joint
