@@ -17,7 +17,8 @@ std::optional<std::vector<StatePath>> orderedRepair(const SearchSpace& space, So
     table.remove(a);
     SafeIntervalResult r = safeIntervalSearch(space, a, table, deadline, max_expansions);
     expansions += r.expansions;
-    table.insert(a, r.outcome == SafeIntervalResult::Outcome::Found ? r.path : StatePath{space.start(a)});
+    table.insert(
+        a, r.outcome == SafeIntervalResult::Outcome::Found ? r.path : StatePath{space.start(a)});
     if (r.outcome != SafeIntervalResult::Outcome::Found) break;
     paths.push_back(std::move(r.path));
   }

@@ -54,8 +54,8 @@ TEST(OrderedRepair, KeepsOutOfLaterStartsAndCollidesWithNobody) {
     all[0] = shortest.path;
     for (std::size_t i = 0; i < order.size(); ++i) all[order[i]] = (*paths)[i];
     const ValidationResult v = validateAll(w, space, all);
-    EXPECT_TRUE(v.valid()) << violationName(v.violation.kind) << " in order " << order[0] << order[1]
-                           << order[2];
+    EXPECT_TRUE(v.valid()) << violationName(v.violation.kind) << " in order " << order[0]
+                           << order[1] << order[2];
     for (std::size_t i = 0; i < order.size(); ++i) {
       for (std::size_t j = i + 1; j < order.size(); ++j) {
         EXPECT_FALSE(passesStartOf(space, order[i], (*paths)[i], order[j]))
