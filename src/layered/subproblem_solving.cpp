@@ -188,31 +188,28 @@ class Solving {
     const bool has_fallback = !options_.fallback.empty() && options_.fallback != options_.backend;
     const double first_part = has_fallback ? 1.0 - options_.fallback_share : 1.0;
     sub.deadline = share_deadline.within(share_deadline.remaining() * first_part);
-    // Around many timed paths, a low-level search can take long to find the gaps between them.
-    // Past a budget, the level is planned as a parallel backend would (the earlier levels of its
-    // cluster at their targets) and delayed until it fits among them, which always works.
-    const bool around_paths = !sub.moving.empty();
-    if (around_paths) sub.max_expansions = kChainExpansionsPerRobot * static_cast<long long>(sub.robots.size());
-    SolveResult solved = makeSolver(options_.backend)->solve(sub);
-    const bool fallback = around_paths && !solved.success() && !sub.deadline.expired();
-    if (fallback) solved = solveThenDelay(sub, solved.stats);
-    // The fallback backend, in the rest of the share, for what the backend failed to solve.
+    SolveAttempt first = solveByBackend(options_.backend, sub);
+    SolveResult solved = std::move(first.result);
+    bool delayed = first.delayed;
+    // The fallback backend, in the rest of the share, for what the backend failed to solve, by
+    // the same protocol.
     bool by_fallback = false;
     if (has_fallback && !solved.success() && solved.status != SolveStatus::Infeasible &&
         !share_deadline.expired()) {
       Subproblem again = sub;
       again.deadline = share_deadline;
-      again.max_expansions = -1;
-      SolveResult second = makeSolver(options_.fallback)->solve(again);
-      addEarlierAttempt(second.stats, solved.stats);
-      if (!second.success()) {
-        second.reason = options_.backend + ": " + solved.reason + "; " + options_.fallback + ": " + second.reason;
+      SolveAttempt second = solveByBackend(options_.fallback, again);
+      addEarlierAttempt(second.result.stats, solved.stats);
+      if (!second.result.success()) {
+        second.result.reason = options_.backend + ": " + solved.reason + "; " + options_.fallback +
+                               ": " + second.result.reason;
       }
-      by_fallback = second.success();
-      solved = std::move(second);
+      by_fallback = second.result.success();
+      delayed = second.delayed;
+      solved = std::move(second.result);
     }
     SolvedSubproblem& s = order_[k];
-    s.delayed_in_cluster = fallback && !by_fallback;
+    s.delayed_in_cluster = delayed;
     s.by_fallback = by_fallback;
     s.status = solved.status;
     s.reason = solved.reason;
@@ -222,9 +219,32 @@ class Solving {
     results_[k] = std::move(solved);
   }
 
+  struct SolveAttempt {
+    SolveResult result;
+    bool delayed = false;  // planned with the earlier levels of its cluster at their targets
+  };
+
+  // `sub` solved by `backend`. Around many timed paths, a low-level search can take long to find
+  // the gaps between them. Past a budget, the level is planned as a parallel backend would (the
+  // earlier levels of its cluster at their targets) and delayed until it fits among them, which
+  // always works.
+  SolveAttempt solveByBackend(const std::string& backend, Subproblem sub) {
+    const bool around_paths = !sub.moving.empty();
+    sub.max_expansions =
+        around_paths ? kChainExpansionsPerRobot * static_cast<long long>(sub.robots.size()) : -1;
+    SolveAttempt attempt;
+    attempt.result = makeSolver(backend)->solve(sub);
+    if (around_paths && !attempt.result.success() && !sub.deadline.expired()) {
+      attempt.result = solveThenDelay(backend, sub, attempt.result.stats);
+      attempt.delayed = true;
+    }
+    return attempt;
+  }
+
   // `sub` with its moving obstacles turned into blocked targets, solved, and delayed until it
   // fits among their paths.
-  SolveResult solveThenDelay(Subproblem sub, const SolveStats& first_attempt) {
+  SolveResult solveThenDelay(const std::string& backend, Subproblem sub,
+                             const SolveStats& first_attempt) {
     const int n = static_cast<int>(instance_.robots.size());
     std::vector<Path> earlier(n);
     std::vector<char> done(n, 0);
@@ -235,7 +255,7 @@ class Solving {
     }
     sub.moving.clear();
     sub.max_expansions = -1;
-    SolveResult solved = makeSolver(options_.backend)->solve(sub);
+    SolveResult solved = makeSolver(backend)->solve(sub);
     addEarlierAttempt(solved.stats, first_attempt);
     if (solved.success()) delayToFit(graphs_, earlier, done, sub.robots, solved.paths);
     return solved;

@@ -48,8 +48,9 @@ struct SolvedSubproblem {
   int attempts = 0;     ///< times it was solved (more than one after a merge before it)
   SolveStats stats;     ///< the backend's statistics for its last attempt
   std::uint64_t seed_offset = 0;  ///< its first position in the decomposition
-  /// Serial backends: planning around its cluster's earlier paths ran past its budget, so it
-  /// was planned with their targets blocked and delayed until it fit among them.
+  /// Serial backends: planning around its cluster's earlier paths ran past its budget, so the
+  /// plan it has (the backend's or the fallback's) was made with their targets blocked and
+  /// delayed until it fit among them.
   bool delayed_in_cluster = false;
   /// The backend failed (not INFEASIBLE) within the first part of its time share, and the
   /// fallback backend solved it in the rest.
@@ -73,7 +74,8 @@ struct SubproblemSolvingOptions {
   std::string backend = "la_cbs";
   /// Backend tried on a subproblem that `backend` fails without proving it infeasible, before
   /// the safeguard merges it ("" or equal to `backend`: none). It must plan around moving
-  /// obstacles if `backend` does.
+  /// obstacles if `backend` does, and it is tried as `backend` is: around its cluster's earlier
+  /// paths within a budget, then with them at their targets and delayed (delayed_in_cluster).
   std::string fallback;
   /// Part of a subproblem's time share left to the fallback (when there is one).
   double fallback_share = 0.5;
