@@ -120,19 +120,28 @@ class Solving {
     return units;
   }
 
+  int robotsOf(std::size_t k) const { return static_cast<int>(order_[k].robots.size()); }
+
   void solvePending() {
     const auto units = pendingUnits();
     if (units.empty()) return;
-    pending_robots_ = 0;
+    int pending = 0;
     for (const auto& u : units) {
-      for (std::size_t k : u) pending_robots_ += static_cast<int>(order_[k].robots.size());
+      for (std::size_t k : u) pending += robotsOf(k);
     }
+    pending_robots_ = pending;
     std::atomic<std::size_t> next{0};
     auto work = [&] {
       for (std::size_t u = next++; u < units.size(); u = next++) {
-        for (std::size_t k : units[u]) {
+        for (std::size_t i = 0; i < units[u].size(); ++i) {
+          const std::size_t k = units[u][i];
           solveOne(k);
-          if (!results_[k]->success()) break;  // the rest of the chain plans around it
+          pending_robots_ -= robotsOf(k);
+          if (results_[k]->success()) continue;
+          // The rest of the chain plans around it: not in this round.
+          for (std::size_t j = i + 1; j < units[u].size(); ++j)
+            pending_robots_ -= robotsOf(units[u][j]);
+          break;
         }
       }
     };
@@ -179,11 +188,12 @@ class Solving {
       }
     }
     // A time share: at least a quarter of what is left, more for a larger part of the robots
-    // being solved; the last subproblem gets all of it. A share that runs out triggers the
-    // safeguard.
+    // still to be solved in this round (those of subproblems solved or being solved included);
+    // the last subproblem gets all of it. A share that runs out triggers the safeguard.
     const double share = k + 1 == order_.size()
                              ? 1.0
-                             : std::max(0.25, static_cast<double>(sub.robots.size()) / std::max(1, pending_robots_));
+                             : std::max(0.25, static_cast<double>(sub.robots.size()) /
+                                                  std::max(1, pending_robots_.load()));
     const Deadline share_deadline = deadline_.within(deadline_.remaining() * share);
     const bool has_fallback = !options_.fallback.empty() && options_.fallback != options_.backend;
     const double first_part = has_fallback ? 1.0 - options_.fallback_share : 1.0;
@@ -382,7 +392,8 @@ class Solving {
   std::vector<std::string> merges_;
   std::vector<std::string> step_asides_;
   std::set<std::pair<int, int>> tried_pairs_;
-  int pending_robots_ = 0;
+  // Robots of the subproblems of this round (solvePending) not solved yet, or being solved.
+  std::atomic<int> pending_robots_{0};
 };
 
 }  // namespace
