@@ -47,7 +47,8 @@ std::size_t stateGraphBytes(long long cells) {
 }
 
 std::size_t distanceTableBytes(long long cells) {
-  return static_cast<std::size_t>(cells) * 4 * sizeof(std::int32_t);  // SearchSpace::distances_
+  // SearchSpace::distances_: 2 bytes a state while distances stay below 65,535 steps.
+  return static_cast<std::size_t>(cells) * 4 * sizeof(std::uint16_t);
 }
 
 MemoryEstimate estimateMemory(int width, int height, int robots, int graphs, int searched_agents) {

@@ -82,6 +82,7 @@ SearchSpace::SearchSpace(const Subproblem& problem)
                    "the distance tables of " + std::to_string(numAgents()) + " robots");
   }
   distances_.resize(numAgents());
+  std::vector<std::int32_t> steps;  // one agent's table as the search fills it
   for (int a = 0; a < numAgents() && problem_.empty(); ++a) {
     if (problem.deadline.expired()) {  // one table per agent: on large maps and fleets, seconds
       stopped_ = true;
@@ -99,10 +100,11 @@ SearchSpace::SearchSpace(const Subproblem& problem)
     } else if (!allows(a, targets_[a], Action::Wait)) {
       problem_ = label(a) + ": target " + toString(target) + " overlaps a footprint of another subproblem";
     } else {
-      if (!restrictedDistances(*this, a, problem.deadline, distances_[a])) {
+      if (!restrictedDistances(*this, a, problem.deadline, steps)) {
         stopped_ = true;
         return;
       }
+      distances_[a].assign(steps);
       if (distances_[a][starts_[a]] < 0) {
         problem_ = label(a) + ": target " + toString(target) + " is not reachable from start " + toString(start);
       }

@@ -114,7 +114,7 @@ TEST(ResourceLimits, GraphEstimateIsTheMemoryTheGraphsTake) {
   const MemoryEstimate e = estimateMemory(map.width(), map.height(), 4, graphs.numGraphs(), 0);
   EXPECT_DOUBLE_EQ(e.graphs_mb * 1048576.0, static_cast<double>(graphs.memoryBytes()));
   EXPECT_EQ(stateGraphBytes(37 * 23), 37u * 23u * 4u);
-  EXPECT_EQ(distanceTableBytes(37 * 23), 37u * 23u * 16u);
+  EXPECT_EQ(distanceTableBytes(37 * 23), 37u * 23u * 8u);  // 4 headings, 2 bytes
   EXPECT_TRUE(contains(e.describe(), "3 state graphs")) << e.describe();
 }
 

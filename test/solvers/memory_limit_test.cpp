@@ -61,9 +61,10 @@ TEST(MemoryLimit, EveryBackendReportsTheLimitOnceTheGuardHasTripped) {
 }
 
 TEST(MemoryLimit, DistanceTablesThatWouldNotFitAreRefusedBeforeAllocation) {
-  // 600 x 600 cells: 5.5 MB of distances per robot, 44 MB for eight, against 20 MB of room.
+  // 600 x 600 cells: 2.75 MB of distances per robot (2 bytes a state), 44 MB for sixteen,
+  // against 20 MB of room.
   std::vector<Robot> robots;
-  for (int i = 0; i < 8; ++i)
+  for (int i = 0; i < 16; ++i)
     robots.push_back(dot("d" + std::to_string(i), {10 * i, 0, 0}, {10 * i, 599, 2}));
   const World world(freeMap(600, 600), robots);
   const MemoryGuard guard(residentMemoryMb() + 20);
@@ -72,7 +73,7 @@ TEST(MemoryLimit, DistanceTablesThatWouldNotFitAreRefusedBeforeAllocation) {
     sub.deadline = sub.deadline.withMemoryGuard(&guard);
     const Outcome out = solveWith(name, world, sub);
     EXPECT_EQ(out.result.status, SolveStatus::ResourceLimit) << name << ": " << describe(out);
-    EXPECT_TRUE(contains(out.result.reason, "distance tables of 8 robots")) << out.result.reason;
+    EXPECT_TRUE(contains(out.result.reason, "distance tables of 16 robots")) << out.result.reason;
     EXPECT_TRUE(contains(out.result.reason, "max_memory_mb=")) << out.result.reason;
   }
 }

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "fleet_planner/core/obstacle_index.h"
+#include "fleet_planner/solvers/distance_table.h"
 #include "fleet_planner/solvers/reservation_table.h"
 #include "fleet_planner/solvers/solver.h"
 
@@ -58,7 +59,7 @@ class SearchSpace {
   std::vector<StateId> starts_, targets_;
   bool has_static_ = false;
   std::unique_ptr<ObstacleIndex> static_cells_;
-  std::vector<std::vector<std::int32_t>> distances_;
+  std::vector<DistanceTable> distances_;
   ReservationTable reservations_;
   std::string problem_;
   bool stopped_ = false;
