@@ -4,12 +4,15 @@
 #include <algorithm>
 #include <array>
 #include <numeric>
+#include <set>
+#include <utility>
 
 #include "fleet_planner/core/random.h"
 #include "fleet_planner/solvers/joint_path_search.h"
 #include "fleet_planner/solvers/joint_repair.h"
 #include "fleet_planner/solvers/neighborhood_growth.h"
 #include "fleet_planner/solvers/ordered_repair.h"
+#include "fleet_planner/solvers/pair_proof.h"
 #include "fleet_planner/solvers/path_splice.h"
 #include "fleet_planner/solvers/registry.h"
 #include "fleet_planner/solvers/safe_interval_search.h"
@@ -334,8 +337,39 @@ class LnsSearch {
       for (int a : sorted) proof_culprits_.push_back(space_.robot(a));
       proof_ = names + " cannot all reach their targets around the obstacles they must avoid " +
                "(their joint search ran out of states)";
+      return false;
     }
+    provePair(group);
     return false;
+  }
+
+  // A pair of the knot that cannot reach its targets even alone among the static obstacles
+  // (pair_proof.h) proves that the subproblem has no plan (proof_): the joint search above
+  // rarely exhausts the timed joint space, and LA-LaCAM's space of configurations is far
+  // smaller. Each pair is tried once.
+  void provePair(const std::vector<int>& group) {
+    for (std::size_t i = 0; i < group.size() && !proof_; ++i) {
+      for (std::size_t j = i + 1; j < group.size() && !proof_; ++j) {
+        const int a = std::min(group[i], group[j]), b = std::max(group[i], group[j]);
+        if (!pairs_tried_.insert({a, b}).second) continue;
+        PairProblem pair;
+        pair.instance = problem_.instance;
+        pair.graphs = problem_.graphs;
+        pair.a = space_.robot(a);
+        pair.b = space_.robot(b);
+        pair.blocked = problem_.blocked;
+        pair.returning = problem_.returning;
+        pair.deadline = problem_.deadline.within(problem_.deadline.remaining() / 8);
+        pair.max_expansions = options_.pair_proof_expansions;
+        const SolveResult r = solvePairAlone(pair);
+        stats_.low_level_expansions += r.stats.low_level_expansions;
+        if (r.status != SolveStatus::Infeasible) continue;
+        proof_culprits_ = {pair.a, pair.b};
+        proof_ = space_.label(a) + " and " + space_.label(b) +
+                 " cannot both reach their targets around the obstacles they must avoid, even " +
+                 "with no other robot moving (" + r.reason + ")";
+      }
+    }
   }
 
   // A colliding agent and up to joint_size - 1 of its partners.
@@ -454,6 +488,7 @@ class LnsSearch {
   int planned_ = 0;                 // robots with a path in the first plan so far
   std::optional<std::string> proof_;  // why the subproblem has no plan, once a search proved it
   std::vector<int> proof_culprits_;   // the robots of that proof (instance indices)
+  std::set<std::pair<int, int>> pairs_tried_;  // by provePair
   NeighborhoodGrowth growth_;
   int size_ = 0;                    // agents in this repair's neighbourhood (growth_)
   std::array<double, kMethods> weights_;

@@ -224,5 +224,20 @@ TEST(LaLns, ProvesAnImpossibleSwapAndNamesBothRobots) {
   EXPECT_LT(o.wall_s, 1.0) << describe(o);
 }
 
+// The same swap along a corridor too long for the joint step to exhaust its timed joint space
+// (it stores 50,000 joint states): the pair alone among the static obstacles (pair_proof.h)
+// proves it. The third robot, at its target in the pocket at the corridor's end, is not named:
+// the two cannot swap even with the pocket free.
+TEST(LaLns, ProvesAnImpossibleSwapInALongCorridorByThePairAlone) {
+  const int n = 80;
+  const World w(mapFromRows({std::string(n, '.'), std::string(n - 1, '@') + "."}),
+                {dot("a", {0, 0, 0}, {n - 3, 0, 0}), dot("b", {n - 3, 0, 2}, {0, 0, 2}),
+                 dot("c", {n - 1, 1, 1}, {n - 1, 1, 1})});
+  const Outcome o = solveWith("la_lns", w, allRobots(w, 5.0));
+  EXPECT_EQ(o.result.status, SolveStatus::Infeasible) << describe(o);
+  EXPECT_NE(o.result.reason.find("'a' and robot 'b'"), std::string::npos) << o.result.reason;
+  EXPECT_EQ(o.result.culprits, (std::vector<int>{0, 1}));
+}
+
 }  // namespace
 }  // namespace fleet_planner::test

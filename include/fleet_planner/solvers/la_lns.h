@@ -21,10 +21,10 @@
 /// has grown to the whole subproblem, by a joint search (joint_path_search.h).
 ///
 /// Beyond the paper's backends. Serial: static footprints and the timed paths of other
-/// subproblems are hard obstacles. Incomplete: the only proof it gives is a knot whose joint
-/// search exhausts its joint space (INFEASIBLE, naming the robots: they cannot reach their
-/// targets together around the hard obstacles); any other unsolved subproblem is TIMEOUT. Same
-/// input and seed, same plan.
+/// subproblems are hard obstacles. Incomplete: the only proofs it gives are a knot whose joint
+/// search exhausts its joint space, or a pair of a knot that cannot reach its targets even alone
+/// among the static obstacles (INFEASIBLE, naming the robots); any other unsolved subproblem is
+/// TIMEOUT. Same input and seed, same plan.
 #include "fleet_planner/solvers/solver.h"
 
 namespace fleet_planner {
@@ -47,6 +47,10 @@ struct LaLnsOptions {
   long long joint_search_nodes = 50'000;
   double joint_seconds = 0.5;
   long long joint_max_expansions = 100'000;
+  /// Where the joint search finds nothing, each pair of the group is tried alone among the
+  /// static obstacles (pair_proof.h), with this many expansions: a pair that cannot reach its
+  /// targets proves that the subproblem has no plan.
+  long long pair_proof_expansions = 2'000'000;
   /// Before each repair, one local repair of a colliding agent (path_splice.h): a few steps of
   /// its path around one of its collisions replanned collision-free, the rest kept (delayed if
   /// need be).
