@@ -1,7 +1,7 @@
 // Proving a pair of robots infeasible; see infeasible_pairs.h.
 #include "fleet_planner/layered/infeasible_pairs.h"
 
-#include "fleet_planner/solvers/pair_proof.h"
+#include "fleet_planner/solvers/la_lacam.h"
 
 namespace fleet_planner {
 
@@ -10,14 +10,13 @@ std::optional<std::string> findInfeasiblePair(const Instance& instance, const Fl
                                               long long max_expansions, const Deadline& deadline) {
   for (const auto& [a, b] : pairs) {
     if (deadline.expired()) return std::nullopt;
-    PairProblem pair;
+    Subproblem pair;
     pair.instance = &instance;
     pair.graphs = &graphs;
-    pair.a = a;
-    pair.b = b;
+    pair.robots = {a, b};
     pair.deadline = deadline;
     pair.max_expansions = max_expansions;
-    const SolveResult r = solvePairAlone(pair);
+    const SolveResult r = LaLacam().solve(pair);
     if (r.status != SolveStatus::Infeasible) continue;
     return "robots '" + instance.robots[a].id + "' and '" + instance.robots[b].id +
            "' cannot both reach their targets, even alone on the map (" + r.reason + ")";

@@ -10,9 +10,9 @@
 #include "fleet_planner/core/random.h"
 #include "fleet_planner/solvers/joint_path_search.h"
 #include "fleet_planner/solvers/joint_repair.h"
+#include "fleet_planner/solvers/la_lacam.h"
 #include "fleet_planner/solvers/neighborhood_growth.h"
 #include "fleet_planner/solvers/ordered_repair.h"
-#include "fleet_planner/solvers/pair_proof.h"
 #include "fleet_planner/solvers/path_splice.h"
 #include "fleet_planner/solvers/registry.h"
 #include "fleet_planner/solvers/safe_interval_search.h"
@@ -344,27 +344,27 @@ class LnsSearch {
   }
 
   // A pair of the knot that cannot reach its targets even alone among the static obstacles
-  // (pair_proof.h) proves that the subproblem has no plan (proof_): the joint search above
-  // rarely exhausts the timed joint space, and LA-LaCAM's space of configurations is far
-  // smaller. Each pair is tried once.
+  // proves that the subproblem has no plan (proof_): dropping robots and obstacles only makes a
+  // problem easier. LA-LaCAM decides the pair (its search over configurations is complete); the
+  // joint search above rarely exhausts its timed joint space, and the pair's configurations are
+  // far fewer. Each pair is tried once.
   void provePair(const std::vector<int>& group) {
     for (std::size_t i = 0; i < group.size() && !proof_; ++i) {
       for (std::size_t j = i + 1; j < group.size() && !proof_; ++j) {
         const int a = std::min(group[i], group[j]), b = std::max(group[i], group[j]);
         if (!pairs_tried_.insert({a, b}).second) continue;
-        PairProblem pair;
+        Subproblem pair;  // no moving obstacles, no other robot of this subproblem
         pair.instance = problem_.instance;
         pair.graphs = problem_.graphs;
-        pair.a = space_.robot(a);
-        pair.b = space_.robot(b);
+        pair.robots = {space_.robot(a), space_.robot(b)};
         pair.blocked = problem_.blocked;
         pair.returning = problem_.returning;
         pair.deadline = problem_.deadline.within(problem_.deadline.remaining() / 8);
         pair.max_expansions = options_.pair_proof_expansions;
-        const SolveResult r = solvePairAlone(pair);
+        const SolveResult r = LaLacam().solve(pair);
         stats_.low_level_expansions += r.stats.low_level_expansions;
         if (r.status != SolveStatus::Infeasible) continue;
-        proof_culprits_ = {pair.a, pair.b};
+        proof_culprits_ = pair.robots;
         proof_ = space_.label(a) + " and " + space_.label(b) +
                  " cannot both reach their targets around the obstacles they must avoid, even " +
                  "with no other robot moving (" + r.reason + ")";

@@ -228,7 +228,7 @@ TEST(LaLns, ProvesAnImpossibleSwapAndNamesBothRobots) {
 
 // The same swap along a longer corridor, with the joint step given 500 joint states, too few to
 // exhaust its timed joint space (as on real maps with the default 50,000): the pair alone among
-// the static obstacles (pair_proof.h) proves it, within its share of the time even under the
+// the static obstacles proves it, within its share of the time even under the
 // sanitizers. The third robot, at its target in the pocket at the corridor's end, is not named:
 // the two cannot swap even with the pocket free.
 TEST(LaLns, ProvesAnImpossibleSwapInALongCorridorByThePairAlone) {

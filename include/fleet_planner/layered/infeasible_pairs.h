@@ -1,8 +1,11 @@
 #pragma once
 /// Proof that an instance has no plan (beyond the paper): two of its robots that cannot both
-/// reach their targets even alone on the map (pair_proof.h). Used on subproblems that failed,
-/// where a knot of robots that no backend unties may be no knot but an impossibility (e.g. a
-/// wide robot whose start and target fill the only corridor that another robot must cross).
+/// reach their targets even alone on the map. Dropping robots from a valid plan leaves a valid
+/// plan, so such a pair makes the whole instance infeasible. LA-LaCAM decides a pair: its search
+/// over joint configurations is complete, and it ends either with a plan or with every reachable
+/// configuration explored. Used on subproblems that failed, where a knot of robots that no
+/// backend unties may be no knot but an impossibility (e.g. a wide robot whose start and target
+/// fill the only corridor that another robot must cross).
 #include <optional>
 #include <string>
 #include <utility>

@@ -48,7 +48,7 @@ struct LaLnsOptions {
   double joint_seconds = 0.5;
   long long joint_max_expansions = 100'000;
   /// Where the joint search finds nothing, each pair of the group is tried alone among the
-  /// static obstacles (pair_proof.h), with this many expansions: a pair that cannot reach its
+  /// static obstacles by LA-LaCAM, with this many expansions: a pair that cannot reach its
   /// targets proves that the subproblem has no plan.
   long long pair_proof_expansions = 2'000'000;
   /// Before each repair, one local repair of a colliding agent (path_splice.h): a few steps of
