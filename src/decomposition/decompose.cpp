@@ -50,6 +50,7 @@ Decomposition decompose(const Instance& instance, const FleetGraphs& graphs, con
   if (!all_built) {
     // Out of time before step 1: the whole fleet as one subproblem, legal by definition.
     d.complete = false;
+    d.pairs_complete = false;
     DecompositionSubproblem all;
     for (int i = 0; i < n; ++i) all.robots.push_back(i);
     d.subproblems.push_back(std::move(all));
@@ -99,6 +100,13 @@ Decomposition decompose(const Instance& instance, const FleetGraphs& graphs, con
       d.subproblems.push_back({levels[c][l], static_cast<int>(c), static_cast<int>(l)});
     }
   }
+  t = std::chrono::steady_clock::now();
+  for (const auto& s : d.subproblems) {
+    const auto pairs = detail::entangledPairs(oracle, s.robots, deadline);
+    d.entangled_pairs.insert(d.entangled_pairs.end(), pairs.begin(), pairs.end());
+  }
+  d.pairs_complete = !deadline.expired();
+  d.entangled_s = since(t);
   return d;
 }
 

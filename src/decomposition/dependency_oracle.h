@@ -3,6 +3,7 @@
 // (masks over robots, or over SATs: 2j = start of robot j, 2j + 1 = its target).
 #include <algorithm>
 #include <optional>
+#include <utility>
 #include <vector>
 
 #include "fleet_planner/core/deadline.h"
@@ -102,5 +103,10 @@ std::vector<std::vector<int>> initialLevels(DependencyOracle& oracle, const std:
 std::vector<std::vector<int>> bipartitionLevels(DependencyOracle& oracle, const std::vector<int>& cluster,
                                                 const std::vector<std::vector<int>>& levels, const Deadline& deadline,
                                                 bool peel);
+/// The pairs (a < b) of `robots` that can go one after the other in neither order, each alone on
+/// the map (Decomposition::entangled_pairs); those found so far once the deadline passes.
+std::vector<std::pair<int, int>> entangledPairs(DependencyOracle& oracle,
+                                                const std::vector<int>& robots,
+                                                const Deadline& deadline);
 
 }  // namespace fleet_planner::detail

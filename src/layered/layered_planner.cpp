@@ -85,6 +85,8 @@ LayeredResult planLayered(const GridMap& map, const Instance& instance, const Fl
   solving_options.fallback = options.fallback;
   solving_options.threads = options.threads;
   solving_options.seed = options.seed;
+  solving_options.entangled_pairs = result.decomposition.entangled_pairs;
+  solving_options.entangled_known = options.decompose && result.decomposition.pairs_complete;
   const Deadline solving =
       deadline.within(deadline.remaining() - std::min(kMergeReserveMaxS, kMergeReserveShare * deadline.remaining()));
   SubproblemSolving solved = solveSubproblems(instance, graphs, std::move(order), solving_options, solving);

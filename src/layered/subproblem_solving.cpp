@@ -29,7 +29,8 @@ constexpr int kStepAsideMargin = 2;
 constexpr std::size_t kStepAsideMinCount = 8;
 
 // Pairs of a failed subproblem's robots tried for an infeasibility proof (infeasible_pairs.h)
-// per failure, the expansions of each, and the part of the time left they may take.
+// per failure, the expansions of each, and the part of the time left they may take (before
+// solving, for the entangled pairs; after each failure, for those of the failed subproblem).
 constexpr std::size_t kPairsPerFailure = 120;
 constexpr long long kPairExpansions = 500'000;
 constexpr double kPairTimeShare = 0.1;
@@ -59,6 +60,12 @@ class Solving {
     SubproblemSolving out;
     order_ = std::move(order);
     results_.assign(order_.size(), std::nullopt);
+    if (std::optional<std::string> proof = entangledPairProof()) {
+      out.status = SolveStatus::Infeasible;
+      out.reason = *proof + "; found before solving";
+      out.order = order_;
+      return out;
+    }
     for (;;) {
       solvePending();
       std::size_t k = 0;
@@ -271,28 +278,57 @@ class Solving {
     return solved;
   }
 
+  // Before solving: a pair of the decomposition's entangled pairs proven unable to reach both
+  // targets.
+  std::optional<std::string> entangledPairProof() {
+    if (!options_.entangled_known) return std::nullopt;
+    return proveAmong(options_.entangled_pairs,
+                      deadline_.within(deadline_.remaining() * kPairTimeShare));
+  }
+
   // A pair of subproblem k's robots that no plan can serve, if one is proven among the pairs
-  // not tried before: first the pairs the failure named (a knot the backend proved impossible
-  // around the other subproblems, the colliding pairs it was left with), then the others.
+  // not tried before. With the entangled pairs known, those among its robots (the others can
+  // go one after the other). Else: first the pairs the failure named (a knot the backend proved
+  // impossible around the other subproblems, the colliding pairs it was left with), then the
+  // others.
   std::optional<std::string> infeasiblePairIn(std::size_t k) {
+    const std::vector<int>& robots = order_[k].robots;
+    auto in_k = [&](int r) { return std::find(robots.begin(), robots.end(), r) != robots.end(); };
     std::vector<std::pair<int, int>> pairs;
     auto add = [&](int a, int b) {
       if (a == b || pairs.size() >= kPairsPerFailure) return;
       const std::pair<int, int> p{std::min(a, b), std::max(a, b)};
-      if (tried_pairs_.insert(p).second) pairs.push_back(p);
+      if (!tried_pairs_.count(p) && std::find(pairs.begin(), pairs.end(), p) == pairs.end())
+        pairs.push_back(p);
     };
-    const std::vector<int> suspects = results_[k] ? results_[k]->culprits : std::vector<int>{};
-    for (std::size_t i = 0; i + 1 < suspects.size(); i += 2) add(suspects[i], suspects[i + 1]);
-    for (std::size_t j = 0; j < suspects.size(); ++j) {
-      for (std::size_t i = 0; i < j; ++i) add(suspects[i], suspects[j]);
+    if (options_.entangled_known) {
+      for (const auto& [a, b] : options_.entangled_pairs) {
+        if (in_k(a) && in_k(b)) add(a, b);
+      }
+    } else {
+      const std::vector<int> suspects = results_[k] ? results_[k]->culprits : std::vector<int>{};
+      for (std::size_t i = 0; i + 1 < suspects.size(); i += 2) add(suspects[i], suspects[i + 1]);
+      for (std::size_t j = 0; j < suspects.size(); ++j) {
+        for (std::size_t i = 0; i < j; ++i) add(suspects[i], suspects[j]);
+      }
+      for (std::size_t i = 0; i < robots.size(); ++i) {
+        for (std::size_t j = i + 1; j < robots.size(); ++j) add(robots[i], robots[j]);
+      }
     }
-    const std::vector<int>& robots = order_[k].robots;
-    for (std::size_t i = 0; i < robots.size(); ++i) {
-      for (std::size_t j = i + 1; j < robots.size(); ++j) add(robots[i], robots[j]);
+    return proveAmong(pairs, deadline_.within(deadline_.remaining() * kPairTimeShare));
+  }
+
+  // The first of `pairs` not tried before proven unable to reach both targets; each pair is
+  // tried once (one cut short by the deadline counts as tried).
+  std::optional<std::string> proveAmong(const std::vector<std::pair<int, int>>& pairs,
+                                        const Deadline& deadline) {
+    for (const auto& p : pairs) {
+      if (deadline.expired()) break;
+      if (!tried_pairs_.insert(p).second) continue;
+      if (auto proof = findInfeasiblePair(instance_, graphs_, {p}, kPairExpansions, deadline))
+        return proof;
     }
-    if (pairs.empty()) return std::nullopt;
-    return findInfeasiblePair(instance_, graphs_, pairs, kPairExpansions,
-                              deadline_.within(deadline_.remaining() * kPairTimeShare));
+    return std::nullopt;
   }
 
   // Safeguard, before a merge: subproblem k solved again with the robots of other subproblems

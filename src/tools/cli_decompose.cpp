@@ -55,6 +55,8 @@ void addDecomposeCommand(CLI::App& app) {
                      {"max_subproblem", d.largest()},
                      {"decomposition_rate", d.rate(n)},
                      {"per_step", steps},
+                     {"entangled_pairs", d.entangled_pairs.size()},
+                     {"entangled_s", d.entangled_s},
                      {"peak_rss_mb", peakRssMb()}};
     if (o->list) {
       nlohmann::json list = nlohmann::json::array();
@@ -64,6 +66,11 @@ void addDecomposeCommand(CLI::App& app) {
         list.push_back({{"cluster", s.cluster}, {"level", s.level}, {"robots", ids}});
       }
       j["subproblem_list"] = list;
+      nlohmann::json pairs = nlohmann::json::array();
+      for (const auto& [a, b] : d.entangled_pairs) {
+        pairs.push_back({p.instance.robots[a].id, p.instance.robots[b].id});
+      }
+      j["entangled_pair_list"] = pairs;
     }
     if (o->check) {
       std::vector<std::vector<int>> order;

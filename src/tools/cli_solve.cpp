@@ -110,6 +110,7 @@ void addSolveCommand(CLI::App& app) {
                      {"subproblems", result.decomposition.subproblems.size()},
                      {"max_subproblem", result.decomposition.largest()},
                      {"decomposition_rate", result.decomposition.rate(n)},
+                     {"entangled_pairs", result.decomposition.entangled_pairs.size()},
                      {"solved_subproblems", result.subproblems.size()},
                      {"max_solved_subproblem", largest},
                      {"merges", result.merges},

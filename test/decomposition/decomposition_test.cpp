@@ -334,6 +334,18 @@ TEST(Decomposition, RelationGraphsStopAtTheDeadline) {
   }
 }
 
+// Two dots trading ends of a corridor cannot go one after the other (each one's target is the
+// other's start); a third on a row of its own can go before or after either.
+TEST(Decomposition, EntangledPairsNameTheRobotsThatNoOrderServes) {
+  const World w(mapFromRows({".......", "@@@@@@@", "......."}),
+                {dot("A", {0, 0, 0}, {6, 0, 0}), dot("B", {6, 0, 1}, {0, 0, 1}),
+                 dot("C", {0, 2, 0}, {6, 2, 0})});
+  const Decomposition d = decomposeChecked(w, 4);
+  EXPECT_TRUE(d.pairs_complete);
+  const std::vector<std::pair<int, int>> expected{{w.index("A"), w.index("B")}};
+  EXPECT_EQ(d.entangled_pairs, expected) << describe(d);
+}
+
 TEST(Decomposition, RateIsLargestOverRobots) {
   const World w = clusterSplitWorld();
   const Decomposition d = decomposeChecked(w, 2);
@@ -436,6 +448,64 @@ TEST(DependencySearch, PathExistsAgreesWithTheRankedSearch) {
   }
   EXPECT_GT(found, 1000);
   EXPECT_GT(none, 1000);
+}
+
+// Whether robots a and b of `instance` can go one after the other, a first, each alone on the
+// map: the independent legality checker on the two of them as two subproblems.
+bool canGoFirst(const GridMap& map, const Instance& instance, int a, int b) {
+  Instance pair;
+  pair.robots = {instance.robots[a], instance.robots[b]};
+  const FleetGraphs graphs(map, footprintsOf(pair));
+  return checkLegality(pair, graphs, {{0}, {1}}).legal;
+}
+
+// Every pair of one subproblem that can go one after the other in neither order, by the
+// independent legality checker, is an entangled pair; pairs of two subproblems always can. The
+// list may hold a few pairs that can (the relations are conservative), not most of them.
+TEST(Decomposition, EntangledPairsHoldEveryPairThatNoOrderServes) {
+  int entangled = 0, orderable = 0, orderable_listed = 0, across = 0;
+  for (std::uint64_t seed = 0; seed < 400; ++seed) {
+    const GridMap map = randomMap(seed);
+    const std::optional<Instance> made = randomInstance(map, seed);
+    if (!made) continue;
+    const FleetGraphs graphs(map, footprintsOf(*made));
+    const Decomposition d = decompose(*made, graphs, {});
+    ASSERT_TRUE(d.pairs_complete);
+    const std::set<std::pair<int, int>> listed(d.entangled_pairs.begin(), d.entangled_pairs.end());
+    ASSERT_EQ(listed.size(), d.entangled_pairs.size())
+        << "seed " << seed << ": a pair listed twice";
+    std::vector<int> part(made->robots.size());
+    for (std::size_t k = 0; k < d.subproblems.size(); ++k) {
+      for (int r : d.subproblems[k].robots) part[r] = static_cast<int>(k);
+    }
+    for (int a = 0; a < static_cast<int>(made->robots.size()); ++a) {
+      for (int b = a + 1; b < static_cast<int>(made->robots.size()); ++b) {
+        const bool no_order = !canGoFirst(map, *made, a, b) && !canGoFirst(map, *made, b, a);
+        if (part[a] != part[b]) {
+          ++across;
+          EXPECT_FALSE(no_order) << "seed " << seed << ": robots " << a << " and " << b
+                                 << " of two subproblems";
+          EXPECT_FALSE(listed.count({a, b})) << "seed " << seed << ": robots " << a << " and " << b;
+          continue;
+        }
+        (no_order ? entangled : orderable) += 1;
+        if (!no_order) {
+          orderable_listed += static_cast<int>(listed.count({a, b}));
+          continue;
+        }
+        EXPECT_TRUE(listed.count({a, b}))
+            << "seed " << seed << ": robots " << a << " and " << b << "\n  " << describe(d);
+      }
+    }
+  }
+  // Both kinds of pair of one subproblem occur, or the test pins little.
+  EXPECT_GT(entangled, 20);
+  EXPECT_GT(orderable, 20);
+  EXPECT_GT(across, 100);
+  EXPECT_LT(orderable_listed, orderable / 2);
+  std::cout << "[ entangled ] " << entangled << " pairs of one subproblem that no order serves, "
+            << orderable << " that one does (" << orderable_listed << " listed), " << across
+            << " across subproblems\n";
 }
 
 TEST(Decomposition, RandomInstancesLegalDeterministicAndPareto) {

@@ -8,6 +8,7 @@
 #include "fleet_planner/layered/infeasible_pairs.h"
 #include "fleet_planner/layered/plan_merge.h"
 #include "fleet_planner/layered/step_aside.h"
+#include "fleet_planner/layered/subproblem_solving.h"
 #include "fleet_planner/layered_planner.h"
 #include "test_maps.h"
 #include "test_robots.h"
@@ -49,11 +50,17 @@ TEST(InfeasiblePairs, ABudgetTooSmallProvesNothing) {
 }
 
 // The layered planner answers INFEASIBLE, naming the pair, instead of merging and timing out:
-// each robot alone passes the pre-check, the level {A, B} fails, and the pair proof ends it.
-TEST(InfeasiblePairs, LayeredPlannerReportsTheProvenPair) {
-  const GridMap map = test::mapFromRows({".......", "@@@@@@@", "......."});
+// each robot alone passes the pre-check, but A and B are entangled (no order of the two serves)
+// and the pair proof ends it before any subproblem is solved.
+Instance swapBesideALane() {
   Instance in = swapThrough(7);
   in.robots.push_back(dot("C", {0, 2, 0}, {6, 2, 0}));
+  return in;
+}
+
+TEST(InfeasiblePairs, LayeredPlannerReportsTheProvenPairBeforeSolving) {
+  const GridMap map = test::mapFromRows({".......", "@@@@@@@", "......."});
+  const Instance in = swapBesideALane();
   const FleetGraphs graphs(map, footprintsOf(in));
   for (const char* backend : {"la_cbs", "la_lacam", "la_lns"}) {
     LayeredOptions o;
@@ -61,7 +68,44 @@ TEST(InfeasiblePairs, LayeredPlannerReportsTheProvenPair) {
     const LayeredResult r = planLayered(map, in, graphs, o, Deadline::in(2.0));
     EXPECT_EQ(r.status, SolveStatus::Infeasible) << backend << ": " << r.reason;
     EXPECT_NE(r.reason.find("'A' and 'B' cannot both reach"), std::string::npos) << backend << ": " << r.reason;
+    EXPECT_NE(r.reason.find("found before solving"), std::string::npos)
+        << backend << ": " << r.reason;
+    for (const SolvedSubproblem& s : r.subproblems) EXPECT_EQ(s.attempts, 0) << backend;
   }
+}
+
+// Without the entangled pairs (a decomposition cut short), the pairs of the subproblem that
+// failed are tried instead.
+TEST(InfeasiblePairs, WithoutEntangledPairsAFailedSubproblemsPairsAreTried) {
+  const GridMap map = test::mapFromRows({".......", "@@@@@@@", "......."});
+  const Instance in = swapBesideALane();
+  const FleetGraphs graphs(map, footprintsOf(in));
+  std::vector<SolvedSubproblem> order(2);
+  order[0].robots = {0, 1};
+  order[1].robots = {2};
+  order[1].cluster = 1;
+  SubproblemSolvingOptions o;
+  o.backend = "la_lns";
+  const SubproblemSolving solved = solveSubproblems(in, graphs, order, o, Deadline::in(4.0));
+  EXPECT_EQ(solved.status, SolveStatus::Infeasible) << solved.reason;
+  EXPECT_NE(solved.reason.find("'A' and 'B' cannot both reach"), std::string::npos)
+      << solved.reason;
+  EXPECT_NE(solved.reason.find("found after subproblem 0"), std::string::npos) << solved.reason;
+}
+
+// An entangled pair that can pass each other (here through a side pocket) is no proof: the
+// planner solves the instance.
+TEST(InfeasiblePairs, AnEntangledPairThatCanPassIsSolved) {
+  const GridMap map = test::mapFromRows({".......", "@@@.@@@", "......."});
+  const Instance in = swapBesideALane();
+  const FleetGraphs graphs(map, footprintsOf(in));
+  LayeredOptions o;
+  o.backend = "la_lacam";
+  const LayeredResult r = planLayered(map, in, graphs, o, Deadline::in(10.0));
+  ASSERT_EQ(r.status, SolveStatus::Success) << r.reason;
+  const std::vector<std::pair<int, int>> entangled{{0, 1}};
+  EXPECT_EQ(r.decomposition.entangled_pairs, entangled);
+  EXPECT_TRUE(validatePlan(map, in, r.plan).valid());
 }
 
 TEST(StepAside, PicksStandingRobotsNearTheWayOnly) {

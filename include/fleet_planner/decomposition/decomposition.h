@@ -5,6 +5,7 @@
 /// the others as static obstacles (earlier ones at their targets, later ones at their starts),
 /// loses no solvability.
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "fleet_planner/core/deadline.h"
@@ -40,10 +41,18 @@ struct Decomposition {
   std::vector<DecompositionSubproblem> subproblems;  ///< in solving order
   std::vector<DecompositionStep> steps;              ///< statistics after each step run
   double relations_s = 0.0;                          ///< building the relation graphs
+  double entangled_s = 0.0;                          ///< finding the entangled pairs
   /// False if the deadline cut it short: then the result is that of the steps completed, which
   /// is still legal. Step 1 always runs once the relation graphs are built; if the deadline
   /// passes while they are built, the result is the whole fleet as one subproblem (no steps).
   bool complete = true;
+  /// Pairs of robots (instance indices, a < b) of one subproblem that cannot go one after the
+  /// other in either order, even alone on the map (beyond the paper). A pair of two subproblems
+  /// always can (legality), and so can a subproblem's other pairs: two robots that cannot both
+  /// reach their targets are one of these pairs. Ascending by subproblem, then by robot. Left
+  /// out once the deadline has passed: `pairs_complete` is false then.
+  std::vector<std::pair<int, int>> entangled_pairs;
+  bool pairs_complete = true;
 
   int largest() const;
   /// Largest subproblem / robots (the paper's decomposition rate); 0 for no robots.

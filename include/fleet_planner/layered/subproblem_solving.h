@@ -17,6 +17,10 @@
 ///   the timed paths exceeds an expansion budget (deterministic, unlike time) is planned with
 ///   those robots at their targets instead and delayed until it fits among their paths.
 ///
+/// An instance with two robots that cannot both reach their targets, even alone on the map, has
+/// no plan (infeasible_pairs.h): such a pair, found among the decomposition's entangled pairs
+/// before solving or among a failed subproblem's pairs, ends the solving with INFEASIBLE.
+///
 /// Units run on a pool of `threads`. Then the subproblems are merged in order. The first one
 /// that failed, while time remains, is solved again with the robots of other subproblems near
 /// its robots' ways free to step aside and come back (step_aside.h); if that fails too, it is
@@ -27,6 +31,7 @@
 /// subproblem's seed is the planner's seed plus its first position in the decomposition, so
 /// results do not depend on the threads.
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "fleet_planner/core/deadline.h"
@@ -81,6 +86,13 @@ struct SubproblemSolvingOptions {
   double fallback_share = 0.5;
   int threads = 1;
   std::uint64_t seed = 0;
+  /// The decomposition's entangled pairs (Decomposition::entangled_pairs): the only pairs of
+  /// robots that may be unable to both reach their targets. Each is tried for a proof of that
+  /// before any subproblem is solved, and a subproblem that fails tries no other pair. Not
+  /// `entangled_known` (no decomposition, or one cut short): a failed subproblem tries the pairs
+  /// of its robots.
+  std::vector<std::pair<int, int>> entangled_pairs;
+  bool entangled_known = false;
 };
 
 /// Solves `order` (robots, cluster and level set; cluster-major order) and merges the plans.
