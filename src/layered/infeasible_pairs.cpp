@@ -1,9 +1,17 @@
 // Proving a pair of robots infeasible; see infeasible_pairs.h.
 #include "fleet_planner/layered/infeasible_pairs.h"
 
+#include "fleet_planner/layered/pair_goal_search.h"
 #include "fleet_planner/solvers/la_lacam.h"
 
 namespace fleet_planner {
+
+namespace {
+
+// Joint configurations the backward search of a pair's goal may collect (about 40 bytes each).
+constexpr long long kBackwardConfigurations = 1'000'000;
+
+}  // namespace
 
 std::optional<std::string> findInfeasiblePair(const Instance& instance, const FleetGraphs& graphs,
                                               const std::vector<std::pair<int, int>>& pairs,
@@ -17,9 +25,20 @@ std::optional<std::string> findInfeasiblePair(const Instance& instance, const Fl
     pair.deadline = deadline;
     pair.max_expansions = max_expansions;
     const SolveResult r = LaLacam().solve(pair);
-    if (r.status != SolveStatus::Infeasible) continue;
+    std::string why = r.reason;
+    if (r.status != SolveStatus::Infeasible) {
+      if (r.success()) continue;
+      // Forwards from the start the space was too large; backwards from the goal it may not be.
+      const PairEnds ends_a{a, instance.robots[a].start, instance.robots[a].target};
+      const PairEnds ends_b{b, instance.robots[b].start, instance.robots[b].target};
+      const PairSearch back =
+          searchPairBackwards(graphs, ends_a, ends_b, kBackwardConfigurations, deadline);
+      if (back.reach != PairReach::Unreachable) continue;
+      why = "every configuration from which both can reach their targets explored, " +
+            std::to_string(back.configurations) + " of them: their starts are not one";
+    }
     return "robots '" + instance.robots[a].id + "' and '" + instance.robots[b].id +
-           "' cannot both reach their targets, even alone on the map (" + r.reason + ")";
+           "' cannot both reach their targets, even alone on the map (" + why + ")";
   }
   return std::nullopt;
 }

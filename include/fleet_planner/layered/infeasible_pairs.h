@@ -3,9 +3,12 @@
 /// reach their targets even alone on the map. Dropping robots from a valid plan leaves a valid
 /// plan, so such a pair makes the whole instance infeasible. LA-LaCAM decides a pair: its search
 /// over joint configurations is complete, and it ends either with a plan or with every reachable
-/// configuration explored. Used on subproblems that failed, where a knot of robots that no
-/// backend unties may be no knot but an impossibility (e.g. a wide robot whose start and target
-/// fill the only corridor that another robot must cross).
+/// configuration explored. Where it runs out of expansions first (an open map has many
+/// configurations to explore), the search backwards from the pair's goal (pair_goal_search.h)
+/// may still decide it. Used on the decomposition's entangled pairs and on subproblems that
+/// failed, where a knot of robots that no backend unties may be no knot but an impossibility
+/// (e.g. a wide robot whose start and target fill the only corridor that another robot must
+/// cross).
 #include <optional>
 #include <string>
 #include <utility>
@@ -18,8 +21,9 @@
 namespace fleet_planner {
 
 /// The first of `pairs` (instance indices) proven unable to reach both targets, as a message
-/// naming both robots; nullopt if none is proven (each pair's search stops after
-/// `max_expansions`, and all stop at the deadline).
+/// naming both robots; nullopt if none is proven (each pair's forward search stops after
+/// `max_expansions`, its backward search after a million configurations, and all stop at the
+/// deadline).
 std::optional<std::string> findInfeasiblePair(const Instance& instance, const FleetGraphs& graphs,
                                               const std::vector<std::pair<int, int>>& pairs,
                                               long long max_expansions, const Deadline& deadline);
