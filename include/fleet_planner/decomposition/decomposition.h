@@ -46,11 +46,12 @@ struct Decomposition {
   /// is still legal. Step 1 always runs once the relation graphs are built; if the deadline
   /// passes while they are built, the result is the whole fleet as one subproblem (no steps).
   bool complete = true;
-  /// Pairs of robots (instance indices, a < b) of one subproblem that cannot go one after the
-  /// other in either order, even alone on the map (beyond the paper). A pair of two subproblems
-  /// always can (legality), and so can a subproblem's other pairs: two robots that cannot both
-  /// reach their targets are one of these pairs. Ascending by subproblem, then by robot. Left
-  /// out once the deadline has passed: `pairs_complete` is false then.
+  /// Pairs of robots (instance indices, a < b) of one subproblem that the relation graphs do not
+  /// let go one after the other in either order, even alone on the map (beyond the paper). A
+  /// pair of two subproblems always can (legality), and so can a subproblem's other pairs: two
+  /// robots that cannot both reach their targets are one of these pairs. The relations are
+  /// conservative, so a few of these pairs can be ordered after all. Ascending by subproblem,
+  /// then by robot. Left out once the deadline has passed: `pairs_complete` is false then.
   std::vector<std::pair<int, int>> entangled_pairs;
   bool pairs_complete = true;
 

@@ -1,8 +1,8 @@
 #pragma once
 /// Whether two robots, alone on the map, can both reach their targets, decided backwards: a
 /// breadth-first search from the pair's goal (both at their targets) over the joint
-/// configurations that can reach it, each step an action or a wait of each robot whose sweeps
-/// do not overlap (collision.h). A step's conflicts do not depend on the direction of time, so
+/// configurations that can reach it, each step an action or a wait of each robot that passes
+/// the plan validator's checks (footprints before the step, sweeps; collision.h). A step's conflicts do not depend on the direction of time, so
 /// the configurations found are exactly those from which a plan reaches the goal: the pair can
 /// be solved if and only if its start is among them.
 ///
