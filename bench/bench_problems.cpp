@@ -5,8 +5,8 @@
 #include <exception>
 #include <utility>
 
-#include "fleet_planner/core/instance_io.h"
-#include "fleet_planner/core/map_io.h"
+#include "fleet_planner/io/instance_io.h"
+#include "fleet_planner/io/map_io.h"
 
 namespace fleet_planner::bench {
 

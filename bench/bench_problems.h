@@ -5,9 +5,9 @@
 #include <memory>
 #include <string>
 
-#include "fleet_planner/core/fleet_graphs.h"
-#include "fleet_planner/core/grid_map.h"
-#include "fleet_planner/core/instance.h"
+#include "fleet_planner/model/fleet_graphs.h"
+#include "fleet_planner/model/grid_map.h"
+#include "fleet_planner/model/instance.h"
 
 namespace fleet_planner::bench {
 

@@ -6,9 +6,9 @@
 #include <string>
 
 #include "bench_problems.h"
-#include "fleet_planner/core/fleet_graphs.h"
-#include "fleet_planner/core/obstacle_index.h"
-#include "fleet_planner/core/state_graph.h"
+#include "fleet_planner/model/fleet_graphs.h"
+#include "fleet_planner/model/obstacle_index.h"
+#include "fleet_planner/model/state_graph.h"
 
 namespace fleet_planner::bench {
 namespace {

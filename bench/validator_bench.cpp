@@ -5,8 +5,8 @@
 #include <string>
 
 #include "bench_problems.h"
-#include "fleet_planner/core/plan_validator.h"
-#include "fleet_planner/layered_planner.h"
+#include "fleet_planner/model/plan_validator.h"
+#include "fleet_planner/layered/layered_planner.h"
 
 namespace fleet_planner::bench {
 namespace {

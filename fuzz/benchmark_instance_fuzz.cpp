@@ -5,7 +5,7 @@
 #include <sstream>
 #include <string>
 
-#include "fleet_planner/core/instance_io.h"
+#include "fleet_planner/io/instance_io.h"
 #include "fuzz_outcome.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

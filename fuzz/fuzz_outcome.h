@@ -7,8 +7,8 @@
 #include <cstdlib>
 #include <string>
 
-#include "fleet_planner/core/errors.h"
-#include "fleet_planner/core/resource_limits.h"
+#include "fleet_planner/runtime/errors.h"
+#include "fleet_planner/runtime/resource_limits.h"
 
 namespace fleet_planner::fuzz {
 

@@ -7,7 +7,7 @@
 #include <sstream>
 #include <string>
 
-#include "fleet_planner/core/map_io.h"
+#include "fleet_planner/io/map_io.h"
 #include "fuzz_outcome.h"
 #include "map_server_map.h"
 #include "pgm_image.h"

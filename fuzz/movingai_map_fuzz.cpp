@@ -4,7 +4,7 @@
 #include <sstream>
 #include <string>
 
-#include "fleet_planner/core/map_io.h"
+#include "fleet_planner/io/map_io.h"
 #include "fuzz_outcome.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

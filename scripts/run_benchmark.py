@@ -28,6 +28,7 @@ import datetime
 import io
 import json
 import os
+import shutil
 import platform
 import random
 import signal
@@ -255,8 +256,8 @@ def solve_one(args, run, folder):
     argv = [args.cli, "solve"] + problem + [
         "--backend", primary, "--mode", method, "--time-limit", str(args.time_limit),
         "--seed", str(seed), "--threads", str(args.threads), "--out", plan]
-    if fallback:
-        argv += ["--fallback", fallback]
+    # Always named: the CLI's own default (the node's, la_lns) would otherwise apply.
+    argv += ["--fallback", fallback or "none"]
     if method == "layered":
         argv += ["--steps", steps]
     timeout = args.time_limit + args.grace
@@ -280,6 +281,9 @@ def solve_one(args, run, folder):
     if j.get("success"):
         valid = validate(args, problem, plan, row) if args.validate else j.get("valid") is True
         row["plan_valid"] = "true" if valid else "false"
+        if args.keep_plans:
+            os.makedirs(args.keep_plans, exist_ok=True)
+            shutil.copyfile(plan, os.path.join(args.keep_plans, "_".join(str(v) for v in run) + ".yaml"))
     return row
 
 
@@ -506,6 +510,9 @@ def parse_args(argv):
                         "0.2 makes every instance of the pools feasible but den520d K=140, see docs/benchmarking.md)")
     p.add_argument("--no-validate", dest="validate", action="store_false",
                    help="skip the independent check of each plan (and decompose --check)")
+    p.add_argument("--keep-plans", metavar="DIR",
+                   help="copy each returned plan to DIR/<map>_<K>_<subset>_<method>_<backend>_<steps>_<seed>.yaml "
+                        "(e.g. to compare two builds' plans byte for byte)")
     p.add_argument("--note", default="", help="free text kept in <out>.meta.json (e.g. where the CLI was built from)")
     p.add_argument("--dry-run", action="store_true", help="list the runs to do and stop")
     args = p.parse_args(argv)

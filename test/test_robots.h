@@ -3,7 +3,7 @@
 #include <string>
 #include <vector>
 
-#include "fleet_planner/core/instance.h"
+#include "fleet_planner/model/instance.h"
 
 namespace fleet_planner::test {
 

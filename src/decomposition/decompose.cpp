@@ -4,7 +4,7 @@
 #include <chrono>
 
 #include "dependency_oracle.h"
-#include "fleet_planner/core/errors.h"
+#include "fleet_planner/runtime/errors.h"
 #include "fleet_planner/decomposition/decomposition.h"
 #include "fleet_planner/decomposition/relation_graph.h"
 

@@ -6,7 +6,7 @@
 #include <utility>
 #include <vector>
 
-#include "fleet_planner/core/deadline.h"
+#include "fleet_planner/runtime/deadline.h"
 #include "fleet_planner/decomposition/dependency_search.h"
 
 namespace fleet_planner::detail {

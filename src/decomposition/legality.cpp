@@ -12,8 +12,8 @@
 #include <string>
 #include <vector>
 
-#include "fleet_planner/core/grid_map.h"
-#include "fleet_planner/core/obstacle_index.h"
+#include "fleet_planner/model/grid_map.h"
+#include "fleet_planner/model/obstacle_index.h"
 
 namespace fleet_planner {
 

@@ -4,10 +4,10 @@
 #include <algorithm>
 #include <cmath>
 
-#include "fleet_planner/core/action.h"
-#include "fleet_planner/core/collision.h"
-#include "fleet_planner/core/footprint_cells.h"
-#include "fleet_planner/core/plan.h"
+#include "fleet_planner/model/action.h"
+#include "fleet_planner/model/collision.h"
+#include "fleet_planner/model/footprint_cells.h"
+#include "fleet_planner/model/plan.h"
 
 namespace fleet_planner {
 namespace path_steps {

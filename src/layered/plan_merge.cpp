@@ -6,7 +6,7 @@
 #include <memory>
 #include <unordered_map>
 
-#include "fleet_planner/core/collision.h"
+#include "fleet_planner/model/collision.h"
 #include "path_steps.h"
 
 namespace fleet_planner {

@@ -6,11 +6,11 @@
 #include <cmath>
 #include <numeric>
 
-#include "fleet_planner/core/collision.h"
-#include "fleet_planner/solvers/agent_constraints.h"
-#include "fleet_planner/solvers/la_cbs.h"
-#include "fleet_planner/solvers/search_space.h"
-#include "fleet_planner/solvers/space_time_astar.h"
+#include "fleet_planner/model/collision.h"
+#include "fleet_planner/solvers/search/agent_constraints.h"
+#include "fleet_planner/solvers/cbs/la_cbs.h"
+#include "fleet_planner/solvers/search/search_space.h"
+#include "fleet_planner/solvers/search/space_time_astar.h"
 #include "path_steps.h"
 
 namespace fleet_planner {
@@ -100,117 +100,154 @@ std::vector<int> blockers(const FleetGraphs& graphs, const std::vector<Path>& pa
   return out;
 }
 
+// One refinement: the plan being improved, the bounds learnt so far, and the passes.
+class Refiner {
+ public:
+  Refiner(const Instance& instance, const FleetGraphs& graphs, std::vector<Path>& paths, const Deadline& deadline,
+          const RefinementOptions& options)
+      : instance_(instance), graphs_(graphs), paths_(paths), deadline_(deadline), options_(options),
+        n_(static_cast<int>(paths.size())),
+        max_expansions_(std::min(options.max_expansions, options.expansions_per_robot * n_)),
+        lower_(n_, 0), known_(n_, 0), ideal_(n_) {}
+
+  RefinementStats run() {
+    const auto start = std::chrono::steady_clock::now();
+    while (stats_.passes < options_.max_passes && !outOfTime() && stats_.expansions < max_expansions_) {
+      ++stats_.passes;
+      const int improved = singlePass();
+      stats_.improved += improved;
+      if (improved > 0) continue;
+      if (options_.group_size < 2) break;
+      const int grouped = groupPass();
+      stats_.improved += grouped;
+      if (grouped == 0) break;
+    }
+    stats_.deadline_hit = outOfTime();
+    stats_.time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return stats_;
+  }
+
+ private:
+  int costOf(int i) const { return pathCost(paths_[i], instance_.robots[i].target); }
+  int makespan() const {
+    int m = 0;
+    for (int i = 0; i < n_; ++i) m = std::max(m, costOf(i));
+    return m;
+  }
+  // A search is started only if the longest one so far would still end before the deadline:
+  // on hundreds of long paths, building one search's reservation table takes most of a second.
+  bool outOfTime() const { return deadline_.expired() || deadline_.remaining() < longest_search_s_; }
+  bool outOfBudget() const { return outOfTime() || stats_.expansions >= max_expansions_; }
+  template <typename Search>
+  auto timed(Search&& search) {
+    const auto t = std::chrono::steady_clock::now();
+    auto result = search();
+    longest_search_s_ =
+        std::max(longest_search_s_, std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count());
+    return result;
+  }
+  // Robots by how much they are delayed beyond their known lower bound, most first. Until a
+  // bound is known a robot's cost stands in for it (so the first pass visits robots by cost).
+  std::vector<int> delayOrder() const {
+    std::vector<int> order(n_);
+    std::iota(order.begin(), order.end(), 0);
+    std::stable_sort(order.begin(), order.end(),
+                     [&](int a, int b) { return costOf(a) - lower_[a] > costOf(b) - lower_[b]; });
+    return order;
+  }
+
+  // Each robot replanned alone around the others, kept when cheaper.
+  int singlePass() {
+    int improved = 0;
+    for (int i : delayOrder()) {
+      if (outOfBudget()) break;
+      const int cost = costOf(i);
+      if (known_[i] && cost <= lower_[i]) continue;
+      ++stats_.searches;
+      int bound = lower_[i];
+      Path better = timed(
+          [&] { return cheaperPath(instance_, graphs_, paths_, i, cost, deadline_, options_, bound, stats_.expansions); });
+      lower_[i] = bound;
+      known_[i] = 1;
+      if (better.empty()) continue;
+      const int new_cost = pathCost(better, instance_.robots[i].target);
+      if (new_cost < 0 || new_cost >= cost) continue;
+      stats_.soc_saved += cost - new_cost;
+      paths_[i] = std::move(better);
+      ++improved;
+    }
+    return improved;
+  }
+
+  // Robot i and those in the way of its ideal path, replanned together by LA-CBS around the
+  // rest; kept when their sum of costs drops and the makespan does not grow.
+  int groupPass() {
+    int improved = 0;
+    for (int i : delayOrder()) {
+      if (outOfBudget()) break;
+      if (!known_[i] || costOf(i) <= lower_[i]) continue;
+      if (ideal_[i].empty()) ideal_[i] = idealPath(instance_, graphs_, i, deadline_);
+      std::vector<int> group = blockers(graphs_, paths_, i, ideal_[i], options_.group_size - 1);
+      if (group.empty()) continue;
+      group.push_back(i);
+      std::sort(group.begin(), group.end());
+      if (replanGroup(group)) ++improved;
+    }
+    return improved;
+  }
+
+  bool replanGroup(const std::vector<int>& group) {
+    Subproblem sub;
+    sub.instance = &instance_;
+    sub.graphs = &graphs_;
+    sub.robots = group;
+    sub.deadline = deadline_;
+    long long before = 0;
+    for (int r : group) before += costOf(r);
+    for (int j = 0; j < n_; ++j) {
+      if (!std::binary_search(group.begin(), group.end(), j)) sub.moving.push_back({j, paths_[j]});
+    }
+    LaCbsOptions cbs_options;
+    cbs_options.max_high_level_nodes = options_.group_nodes;
+    cbs_options.pairwise_delay_nodes = 0;
+    cbs_options.max_low_level_nodes = options_.max_nodes_per_search;
+    cbs_options.max_total_expansions = options_.group_expansions;
+    ++stats_.group_searches;
+    const SolveResult solved = timed([&] { return LaCbs(cbs_options).solve(sub); });
+    stats_.expansions += solved.stats.low_level_expansions;
+    if (!solved.success()) return false;
+    long long after = 0;
+    int longest = 0;
+    for (std::size_t k = 0; k < group.size(); ++k) {
+      const int c = pathCost(solved.paths[k], instance_.robots[group[k]].target);
+      after += c;
+      longest = std::max(longest, c);
+    }
+    if (after >= before || longest > makespan()) return false;  // SOC drops, makespan does not grow
+    for (std::size_t k = 0; k < group.size(); ++k) paths_[group[k]] = solved.paths[k];
+    stats_.soc_saved += before - after;
+    return true;
+  }
+
+  const Instance& instance_;
+  const FleetGraphs& graphs_;
+  std::vector<Path>& paths_;
+  const Deadline& deadline_;
+  const RefinementOptions& options_;
+  const int n_;
+  const long long max_expansions_;
+  RefinementStats stats_;
+  std::vector<int> lower_;   // lower bounds on each robot's cost, learnt from the searches
+  std::vector<char> known_;  // lower_[i] is known
+  std::vector<Path> ideal_;
+  double longest_search_s_ = 0.0;
+};
+
 }  // namespace
 
 RefinementStats refinePlan(const Instance& instance, const FleetGraphs& graphs, std::vector<Path>& paths,
                            const Deadline& deadline, const RefinementOptions& options) {
-  const auto start = std::chrono::steady_clock::now();
-  RefinementStats stats;
-  const int n = static_cast<int>(paths.size());
-  const long long max_expansions = std::min(options.max_expansions, options.expansions_per_robot * n);
-  auto costOf = [&](int i) { return pathCost(paths[i], instance.robots[i].target); };
-  auto makespan = [&] {
-    int m = 0;
-    for (int i = 0; i < n; ++i) m = std::max(m, costOf(i));
-    return m;
-  };
-  // Lower bounds, learnt from the searches; until known, a robot's cost stands in for them (so
-  // the first pass visits robots by cost).
-  std::vector<int> lower(n, 0);
-  std::vector<char> known(n, 0);
-  std::vector<Path> ideal(n);
-  // A search is started only if the longest one so far would still end before the deadline:
-  // on hundreds of long paths, building one search's reservation table takes most of a second.
-  double longest_search_s = 0.0;
-  auto outOfTime = [&] { return deadline.expired() || deadline.remaining() < longest_search_s; };
-  auto timed = [&](auto&& search) {
-    const auto t = std::chrono::steady_clock::now();
-    auto result = search();
-    longest_search_s = std::max(longest_search_s, std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count());
-    return result;
-  };
-  auto delayOrder = [&] {
-    std::vector<int> order(n);
-    std::iota(order.begin(), order.end(), 0);
-    std::stable_sort(order.begin(), order.end(),
-                     [&](int a, int b) { return costOf(a) - lower[a] > costOf(b) - lower[b]; });
-    return order;
-  };
-  // Robot i and those in the way of its ideal path, replanned together by LA-CBS around the
-  // rest; kept when their sum of costs drops.
-  auto groupPass = [&] {
-    int improved = 0;
-    for (int i : delayOrder()) {
-      if (outOfTime() || stats.expansions >= max_expansions) break;
-      if (!known[i] || costOf(i) <= lower[i]) continue;
-      if (ideal[i].empty()) ideal[i] = idealPath(instance, graphs, i, deadline);
-      std::vector<int> group = blockers(graphs, paths, i, ideal[i], options.group_size - 1);
-      if (group.empty()) continue;
-      group.push_back(i);
-      std::sort(group.begin(), group.end());
-      Subproblem sub;
-      sub.instance = &instance;
-      sub.graphs = &graphs;
-      sub.robots = group;
-      sub.deadline = deadline;
-      long long before = 0;
-      for (int r : group) before += costOf(r);
-      for (int j = 0; j < n; ++j) {
-        if (!std::binary_search(group.begin(), group.end(), j)) sub.moving.push_back({j, paths[j]});
-      }
-      LaCbsOptions cbs_options;
-      cbs_options.max_high_level_nodes = options.group_nodes;
-      cbs_options.pairwise_delay_nodes = 0;
-      cbs_options.max_low_level_nodes = options.max_nodes_per_search;
-      cbs_options.max_total_expansions = options.group_expansions;
-      ++stats.group_searches;
-      const SolveResult solved = timed([&] { return LaCbs(cbs_options).solve(sub); });
-      stats.expansions += solved.stats.low_level_expansions;
-      if (!solved.success()) continue;
-      long long after = 0;
-      int longest = 0;
-      for (std::size_t k = 0; k < group.size(); ++k) {
-        const int c = pathCost(solved.paths[k], instance.robots[group[k]].target);
-        after += c;
-        longest = std::max(longest, c);
-      }
-      if (after >= before || longest > makespan()) continue;  // SOC drops, makespan does not grow
-      for (std::size_t k = 0; k < group.size(); ++k) paths[group[k]] = solved.paths[k];
-      stats.soc_saved += before - after;
-      ++improved;
-    }
-    return improved;
-  };
-  while (stats.passes < options.max_passes && !outOfTime() && stats.expansions < max_expansions) {
-    ++stats.passes;
-    int improved = 0;
-    for (int i : delayOrder()) {
-      if (outOfTime() || stats.expansions >= max_expansions) break;
-      const int cost = costOf(i);
-      if (known[i] && cost <= lower[i]) continue;
-      ++stats.searches;
-      int bound = lower[i];
-      Path better =
-          timed([&] { return cheaperPath(instance, graphs, paths, i, cost, deadline, options, bound, stats.expansions); });
-      lower[i] = bound;
-      known[i] = 1;
-      if (better.empty()) continue;
-      const int new_cost = pathCost(better, instance.robots[i].target);
-      if (new_cost < 0 || new_cost >= cost) continue;
-      stats.soc_saved += cost - new_cost;
-      paths[i] = std::move(better);
-      ++improved;
-    }
-    stats.improved += improved;
-    if (improved > 0) continue;
-    if (options.group_size < 2) break;
-    const int grouped = groupPass();
-    stats.improved += grouped;
-    if (grouped == 0) break;
-  }
-  stats.deadline_hit = outOfTime();
-  stats.time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  return stats;
+  return Refiner(instance, graphs, paths, deadline, options).run();
 }
 
 }  // namespace fleet_planner

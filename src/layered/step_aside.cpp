@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <cstdlib>
 
-#include "fleet_planner/core/graph_search.h"
+#include "fleet_planner/model/graph_search.h"
 #include "path_steps.h"
 
 namespace fleet_planner {

@@ -14,18 +14,15 @@ int main(int argc, char** argv) {
     for (const auto& name : fleet_planner::unknownPlannerParameters(private_nh)) {
       ROS_WARN("fleet_planner: unknown parameter %s (ignored; see config/planner.yaml)", name.c_str());
     }
-    const auto problems = fleet_planner::checkPlannerConfig(config);
-    for (const auto& p : problems) ROS_FATAL("fleet_planner: parameter %s/%s", private_nh.getNamespace().c_str(), p.c_str());
-    if (!problems.empty()) return 1;
-
     fleet_planner::BackendPlugins plugins;
     for (const auto& p : plugins.load()) ROS_WARN("fleet_planner: %s", p.c_str());
-    std::string why_not;
-    const std::string backend = fleet_planner::resolveBackendName(config.backend, &why_not);
-    if (backend.empty()) {
-      ROS_FATAL("fleet_planner: parameter %s: %s", private_nh.resolveName("backend").c_str(), why_not.c_str());
-      return 1;
-    }
+    // Every parameter is checked here, the backends against the plugins just loaded: a bad one
+    // stops the node now rather than failing each call.
+    auto problems = fleet_planner::checkPlannerConfig(config);
+    for (const auto& p : fleet_planner::checkPlannerBackends(config)) problems.push_back(p);
+    for (const auto& p : problems) ROS_FATAL("fleet_planner: parameter %s/%s", private_nh.getNamespace().c_str(), p.c_str());
+    if (!problems.empty()) return 1;
+    const std::string backend = fleet_planner::resolveBackendName(config.backend, nullptr);
     std::string names;
     for (const auto& n : plugins.declared()) names += " " + n;
     ROS_INFO("fleet_planner: backend plugins:%s; default backend %s", names.c_str(), backend.c_str());

@@ -2,7 +2,7 @@
 
 #include <pluginlib/class_loader.hpp>
 
-#include "fleet_planner/core/errors.h"
+#include "fleet_planner/runtime/errors.h"
 #include "fleet_planner/solvers/registry.h"
 
 namespace fleet_planner {
@@ -17,6 +17,7 @@ class PluginSolver : public Solver {
       : impl_(std::move(impl)), keep_loader_(std::move(keep_loader)) {}
   std::string name() const override { return impl_->name(); }
   bool avoidsMovingObstacles() const override { return impl_->avoidsMovingObstacles(); }
+  void configure(const BackendOptionValues& values) override { impl_->configure(values); }
   SolveResult solve(const Subproblem& problem) override { return impl_->solve(problem); }
 
  private:

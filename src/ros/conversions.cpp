@@ -3,7 +3,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "fleet_planner/core/errors.h"
+#include "fleet_planner/runtime/errors.h"
 
 namespace fleet_planner {
 

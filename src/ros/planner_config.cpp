@@ -4,7 +4,8 @@
 #include <limits>
 #include <sstream>
 
-#include "fleet_planner/core/footprint.h"
+#include "fleet_planner/model/footprint.h"
+#include "fleet_planner/ros/backend_loader.h"
 
 namespace fleet_planner {
 
@@ -59,6 +60,35 @@ class Checker {
 
 }  // namespace
 
+PlanningOptions planningOptions(const PlannerConfig& c) {
+  PlanningOptions o;
+  o.backend = c.backend;
+  o.fallback = c.fallback;
+  o.backend_parameters = c.backend_parameters;
+  o.decompose = c.decomposition;
+  o.last_step = c.decomposition_steps;
+  o.threads = c.threads;
+  o.refine = c.refine;
+  o.compress = c.compress;
+  o.time_limit = c.time_limit;
+  o.limits = c.resourceLimits();
+  return o;
+}
+
+std::vector<std::string> checkPlannerBackends(const PlannerConfig& c) {
+  std::vector<std::string> problems;
+  PlanningOptions o = planningOptions(c);
+  std::string why_not;
+  o.backend = resolveBackendName(c.backend, &why_not);
+  if (o.backend.empty()) problems.push_back("backend: " + why_not);
+  if (!c.fallback.empty()) {
+    o.fallback = resolveBackendName(c.fallback, &why_not);
+    if (o.fallback.empty()) problems.push_back("fallback: " + why_not);
+  }
+  if (!problems.empty()) return problems;
+  return checkPlanningOptions(o);  // "fallback: ...", "backend_parameters: ..."
+}
+
 std::vector<std::string> checkPlannerConfig(const PlannerConfig& c) {
   Checker check;
   check.nonEmpty("backend", c.backend);
@@ -66,7 +96,7 @@ std::vector<std::string> checkPlannerConfig(const PlannerConfig& c) {
   check.positive("max_time_limit", c.max_time_limit);
   check.atMost("time_limit", c.time_limit, "max_time_limit", c.max_time_limit);
   check.range("decomposition_steps", c.decomposition_steps, 1, 4);
-  check.range("threads", c.threads, 1, 64);
+  check.range("threads", c.threads, 0, 64);
   check.oneOf("busy_policy", c.busy_policy, {"reject", "queue"});
   check.range("max_map_cells", c.max_map_cells, 1, std::numeric_limits<int>::max());
   check.range("max_robots", c.max_robots, 1, std::numeric_limits<int>::max());

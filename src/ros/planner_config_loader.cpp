@@ -3,7 +3,7 @@
 #include <ros/param.h>
 #include <xmlrpcpp/XmlRpcValue.h>
 
-#include "fleet_planner/core/errors.h"
+#include "fleet_planner/runtime/errors.h"
 #include "fleet_planner/ros/planner_config.h"
 
 namespace fleet_planner {
@@ -33,6 +33,24 @@ class Reader {
     if (v.getType() != XmlRpc::XmlRpcValue::TypeBoolean) wrongType(name, "true or false", v);
     out = static_cast<bool>(v);
   }
+  /// {backend: {option: number or bool}}.
+  void read(const char* name, BackendParameters& out) {
+    XmlRpc::XmlRpcValue v;
+    if (!get(name, v)) return;
+    if (v.getType() != XmlRpc::XmlRpcValue::TypeStruct) wrongType(name, "a dictionary {backend: {option: value}}", v);
+    for (auto& [backend, options] : v) {
+      if (options.getType() != XmlRpc::XmlRpcValue::TypeStruct) {
+        wrongType((std::string(name) + "/" + backend).c_str(), "a dictionary {option: value}", options);
+      }
+      for (auto& [option, value] : options) {
+        const std::string full = std::string(name) + "/" + backend + "/" + option;
+        if (value.getType() == XmlRpc::XmlRpcValue::TypeDouble) out[backend][option] = static_cast<double>(value);
+        else if (value.getType() == XmlRpc::XmlRpcValue::TypeInt) out[backend][option] = static_cast<int>(value);
+        else if (value.getType() == XmlRpc::XmlRpcValue::TypeBoolean) out[backend][option] = static_cast<bool>(value) ? 1 : 0;
+        else wrongType(full.c_str(), "a number or true/false", value);
+      }
+    }
+  }
   void read(const char* name, std::string& out) {
     XmlRpc::XmlRpcValue v;
     if (!get(name, v)) return;
@@ -57,18 +75,16 @@ class Reader {
 
 }  // namespace
 
-namespace {
-
-const char* const kParameters[] = {
-    "backend",          "time_limit",         "max_time_limit",    "decomposition",
-    "decomposition_steps", "threads",         "busy_policy",       "max_map_cells",
-    "max_robots",       "max_memory_mb",      "occupied_threshold", "unknown_policy",
-    "position_tolerance", "heading_tolerance", "seconds_per_step", "map_frame",
-    "base_frame",       "tf_timeout",         "playback",          "planned_frame",
-    "playback_rate",    "playback_loop",      "sweep_tolerance",  "refine",
-    "compress",         "fallback"};
-
-}  // namespace
+const std::vector<std::string>& plannerParameterNames() {
+  static const std::vector<std::string> names = {
+      "backend",           "time_limit",         "max_time_limit",  "decomposition",     "decomposition_steps",
+      "threads",           "fallback",           "backend_parameters", "refine",         "compress",
+      "busy_policy",       "max_map_cells",      "max_robots",      "max_memory_mb",     "occupied_threshold",
+      "unknown_policy",    "position_tolerance", "heading_tolerance", "sweep_tolerance", "seconds_per_step",
+      "map_frame",         "base_frame",         "tf_timeout",      "playback",          "planned_frame",
+      "playback_rate",     "playback_loop"};
+  return names;
+}
 
 std::vector<std::string> unknownPlannerParameters(const ros::NodeHandle& nh) {
   std::vector<std::string> names, unknown;
@@ -77,8 +93,8 @@ std::vector<std::string> unknownPlannerParameters(const ros::NodeHandle& nh) {
   for (const std::string& name : names) {
     if (name.rfind(prefix, 0) != 0) continue;
     const std::string key = name.substr(prefix.size());
-    bool known = false;
-    for (const char* k : kParameters) known = known || key == k;
+    bool known = key.rfind("backend_parameters/", 0) == 0;  // checked by checkBackendParameters
+    for (const std::string& k : plannerParameterNames()) known = known || key == k;
     if (!known) unknown.push_back(name);
   }
   return unknown;
@@ -96,6 +112,7 @@ PlannerConfig loadPlannerConfig(const ros::NodeHandle& nh) {
   r.read("refine", c.refine);
   r.read("compress", c.compress);
   r.read("fallback", c.fallback);
+  r.read("backend_parameters", c.backend_parameters);
   r.read("busy_policy", c.busy_policy);
   r.read("max_map_cells", c.max_map_cells);
   r.read("max_robots", c.max_robots);

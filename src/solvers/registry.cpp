@@ -3,7 +3,7 @@
 #include <map>
 #include <mutex>
 
-#include "fleet_planner/core/errors.h"
+#include "fleet_planner/runtime/errors.h"
 
 namespace fleet_planner {
 
@@ -42,6 +42,26 @@ std::unique_ptr<Solver> makeSolver(const std::string& name) {
   return factory();
 }
 
+std::unique_ptr<Solver> makeSolver(const std::string& name, const BackendParameters& parameters) {
+  std::unique_ptr<Solver> solver = makeSolver(name);
+  auto it = parameters.find(name);
+  if (it == parameters.end()) it = parameters.find(solver->name());
+  if (it != parameters.end()) solver->configure(it->second);
+  return solver;
+}
+
+std::vector<std::string> checkBackendParameters(const BackendParameters& parameters) {
+  std::vector<std::string> problems;
+  for (const auto& [backend, values] : parameters) {
+    try {
+      makeSolver(backend)->configure(values);
+    } catch (const std::exception& e) {
+      problems.push_back(e.what());
+    }
+  }
+  return problems;
+}
+
 std::vector<std::string> solverNames() {
   std::lock_guard<std::mutex> lock(registryMutex());
   std::vector<std::string> names;
@@ -63,6 +83,8 @@ const char* statusName(SolveStatus status) {
       return "INVALID_INPUT";
     case SolveStatus::ResourceLimit:
       return "RESOURCE_LIMIT";
+    case SolveStatus::InternalError:
+      return "INTERNAL_ERROR";
   }
   return "?";
 }

@@ -1,9 +1,9 @@
 // `check`: the independent validator on a plan file; `precheck`: the solvability pre-check.
 #include "cli_common.h"
-#include "fleet_planner/core/fleet_graphs.h"
-#include "fleet_planner/core/instance_check.h"
-#include "fleet_planner/core/plan_io.h"
-#include "fleet_planner/core/plan_validator.h"
+#include "fleet_planner/model/fleet_graphs.h"
+#include "fleet_planner/model/instance_check.h"
+#include "fleet_planner/io/plan_io.h"
+#include "fleet_planner/model/plan_validator.h"
 
 namespace fleet_planner::cli {
 

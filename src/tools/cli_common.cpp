@@ -6,10 +6,10 @@
 #include <string>
 #include <thread>
 
-#include "fleet_planner/core/errors.h"
-#include "fleet_planner/core/instance_check.h"
-#include "fleet_planner/core/instance_io.h"
-#include "fleet_planner/core/map_io.h"
+#include "fleet_planner/runtime/errors.h"
+#include "fleet_planner/model/instance_check.h"
+#include "fleet_planner/io/instance_io.h"
+#include "fleet_planner/io/map_io.h"
 
 namespace fleet_planner::cli {
 
@@ -48,6 +48,21 @@ void addLimitOptions(CLI::App* cmd, ResourceLimits& limits) {
   cmd->add_option("--max-memory-mb", limits.max_memory_mb,
                   "resident memory limit: graphs are refused and searches stop (RESOURCE_LIMIT) beyond it")
       ->check(CLI::PositiveNumber);
+}
+
+void addBackendOptions(CLI::App* cmd, PlanningOptions& options, std::vector<std::string>& params) {
+  cmd->add_option("--backend", options.backend, "la_lacam (default) | la_cbs | la_lns (any registered backend)");
+  cmd->add_option("--fallback", options.fallback,
+                  "backend tried on a subproblem that --backend fails, in the rest of its time share, before the "
+                  "safeguard merges it (default la_lns; none: no fallback)");
+  cmd->add_option("--backend-param", params,
+                  "a backend's option by name, BACKEND.OPTION=VALUE (repeatable; e.g. la_lns.neighborhood_size=12; "
+                  "docs/design.md lists them)");
+}
+
+void applyBackendOptions(PlanningOptions& options, const std::vector<std::string>& params) {
+  if (options.fallback == "none") options.fallback.clear();
+  for (const std::string& p : params) parseBackendParameter(p, options.backend_parameters);
 }
 
 Problem loadProblem(const ProblemOptions& options) {

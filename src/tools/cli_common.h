@@ -2,13 +2,15 @@
 /// Helpers shared by the CLI's subcommands.
 #include <chrono>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
 #include "cli_commands.h"
-#include "fleet_planner/core/grid_map.h"
-#include "fleet_planner/core/instance.h"
-#include "fleet_planner/core/resource_limits.h"
+#include "fleet_planner/model/grid_map.h"
+#include "fleet_planner/model/instance.h"
+#include "fleet_planner/planning/planning_options.h"
+#include "fleet_planner/runtime/resource_limits.h"
 
 namespace fleet_planner::cli {
 
@@ -34,6 +36,14 @@ void addProblemOptions(CLI::App* cmd, ProblemOptions& options);
 
 /// Registers --max-map-cells, --max-robots and --max-memory-mb on `cmd` (resource_limits.h).
 void addLimitOptions(CLI::App* cmd, ResourceLimits& limits);
+
+/// Registers --backend, --fallback and --backend-param (into `params`, applied by
+/// applyBackendOptions) on `cmd`, with `options`' values as the defaults.
+void addBackendOptions(CLI::App* cmd, PlanningOptions& options, std::vector<std::string>& params);
+
+/// Parses the --backend-param values into options.backend_parameters and turns a fallback of
+/// "none" into "" (throws InvalidInput naming a malformed value).
+void applyBackendOptions(PlanningOptions& options, const std::vector<std::string>& params);
 
 struct Problem {
   GridMap map;

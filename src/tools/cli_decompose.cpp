@@ -2,8 +2,8 @@
 #include <chrono>
 
 #include "cli_common.h"
-#include "fleet_planner/core/fleet_graphs.h"
-#include "fleet_planner/core/memory_guard.h"
+#include "fleet_planner/model/fleet_graphs.h"
+#include "fleet_planner/runtime/memory_guard.h"
 #include "fleet_planner/decomposition/decomposition.h"
 #include "fleet_planner/decomposition/legality.h"
 

@@ -3,9 +3,9 @@
 #include <filesystem>
 
 #include "cli_common.h"
-#include "fleet_planner/core/instance_generator.h"
-#include "fleet_planner/core/instance_io.h"
-#include "fleet_planner/core/map_io.h"
+#include "fleet_planner/io/instance_generator.h"
+#include "fleet_planner/io/instance_io.h"
+#include "fleet_planner/io/map_io.h"
 
 namespace fleet_planner::cli {
 

@@ -2,7 +2,7 @@
 #include <chrono>
 
 #include "cli_common.h"
-#include "fleet_planner/core/fleet_graphs.h"
+#include "fleet_planner/model/fleet_graphs.h"
 
 namespace fleet_planner::cli {
 

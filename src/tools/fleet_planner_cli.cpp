@@ -4,11 +4,12 @@
 #include <iostream>
 
 #include "cli_commands.h"
-#include "fleet_planner/core/errors.h"
+#include "fleet_planner/runtime/errors.h"
 
 int main(int argc, char** argv) {
   CLI::App app{"fleet_planner command-line tool: LA-MAPF instances, state graphs and plans"};
   app.require_subcommand(1);
+  app.footer(fleet_planner::cli::kExitStatusHelp);
   fleet_planner::cli::addGenerateCommand(app);
   fleet_planner::cli::addCheckCommand(app);
   fleet_planner::cli::addGraphsCommand(app);
@@ -21,10 +22,10 @@ int main(int argc, char** argv) {
     return app.exit(e);
   } catch (const fleet_planner::InputError& e) {
     std::cerr << "error: " << e.what() << "\n";
-    return 2;
+    return fleet_planner::cli::kExitBadInput;
   } catch (const std::exception& e) {
     std::cerr << "error: " << e.what() << "\n";
-    return 3;
+    return fleet_planner::cli::kExitInternalError;
   }
   return fleet_planner::cli::exitCode();
 }

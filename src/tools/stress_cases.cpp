@@ -4,9 +4,9 @@
 #include <cmath>
 #include <filesystem>
 
-#include "fleet_planner/core/errors.h"
-#include "fleet_planner/core/instance_generator.h"
-#include "fleet_planner/core/random.h"
+#include "fleet_planner/runtime/errors.h"
+#include "fleet_planner/io/instance_generator.h"
+#include "fleet_planner/runtime/random.h"
 
 namespace fleet_planner::cli {
 

@@ -7,9 +7,9 @@
 #include <string>
 #include <vector>
 
-#include "fleet_planner/core/action.h"
-#include "fleet_planner/core/grid_map.h"
-#include "fleet_planner/core/instance.h"
+#include "fleet_planner/model/action.h"
+#include "fleet_planner/model/grid_map.h"
+#include "fleet_planner/model/instance.h"
 
 namespace fleet_planner::cli {
 

@@ -9,11 +9,9 @@
 #include <thread>
 
 #include "cli_common.h"
-#include "fleet_planner/core/fleet_graphs.h"
-#include "fleet_planner/core/memory_guard.h"
-#include "fleet_planner/core/plan_validator.h"
-#include "fleet_planner/core/random.h"
-#include "fleet_planner/layered_planner.h"
+#include "fleet_planner/model/plan_validator.h"
+#include "fleet_planner/runtime/random.h"
+#include "fleet_planner/planning/plan_fleet.h"
 
 namespace fleet_planner::cli {
 
@@ -57,20 +55,21 @@ RunOutcome solveOnce(const StressCase& c, const StressConfig& config, double lim
                      const StressRunOptions& options) {
   RunOutcome out;
   const double cpu0 = processCpuSeconds();
-  std::vector<Footprint> footprints;
-  for (const Robot& r : c.instance.robots) footprints.push_back(r.footprint);
-  const MemoryGuard guard(options.limits.max_memory_mb);
   const auto t0 = std::chrono::steady_clock::now();
   try {
-    const Deadline deadline = Deadline::in(limit).withMemoryGuard(&guard);
-    const FleetGraphs graphs(c.map, footprints, c.model, options.threads, options.limits, deadline);
-    LayeredOptions lo;
-    lo.backend = config.backend;
-    lo.decompose = config.steps > 0;
-    lo.last_step = config.steps > 0 ? config.steps : 4;
-    lo.threads = options.threads;
-    lo.seed = c.seed;
-    const LayeredResult result = planLayered(c.map, c.instance, graphs, lo, deadline);
+    PlanningOptions po;  // the facade's defaults, but the configuration's backend and no fallback
+    po.backend = config.backend;
+    po.fallback.clear();
+    po.decompose = config.steps > 0;
+    po.last_step = config.steps > 0 ? config.steps : 4;
+    po.threads = options.threads;
+    po.seed = c.seed;
+    po.time_limit = limit;
+    po.limits = options.limits;
+    po.model = c.model;
+    PlanningCall call;
+    call.started = t0;
+    const PlanningResult result = planFleet(c.map, c.instance, po, call);
     out.wall_s = secondsSince(t0);
     out.status = statusName(result.status);
     out.reason = result.reason;
@@ -83,10 +82,6 @@ RunOutcome solveOnce(const StressCase& c, const StressConfig& config, double lim
       out.deterministic_candidate = result.merges.empty() && result.step_asides.empty() && result.decomposition.complete &&
                                     !result.refinement.deadline_hit && !result.compression.deadline_hit;
     }
-  } catch (const DeadlineExpired& e) {  // the state graphs were not done in time: a TIMEOUT
-    out.wall_s = secondsSince(t0);
-    out.status = guard.exceeded() ? "RESOURCE_LIMIT" : "TIMEOUT";
-    out.reason = e.what();
   } catch (const std::exception& e) {
     out.wall_s = secondsSince(t0);
     out.exception = e.what();
@@ -100,6 +95,86 @@ RunOutcome solveOnce(const StressCase& c, const StressConfig& config, double lim
 
 std::string shortText(const std::string& s, std::size_t max = 300) {
   return s.size() <= max ? s : s.substr(0, max) + "...";
+}
+
+// Appends a violation of `config` to `violations`.
+void addViolation(nlohmann::json& violations, const std::string& kind, const StressConfig& config, double limit,
+                  const std::string& detail) {
+  violations.push_back({{"kind", kind},
+                        {"config", config.name()},
+                        {"backend", config.backend},
+                        {"mode", config.mode()},
+                        {"limit_s", limit},
+                        {"detail", shortText(detail, 600)}});
+}
+
+// One configuration on case `c`, its overrun confirmed by re-runs and its outcome checked; its
+// violations are appended to `violations`. Returns the run's JSON; `out` is its outcome.
+nlohmann::json runConfig(const StressCase& c, const StressConfig& config, const StressRunOptions& options,
+                         const std::function<void(const StressConfig&)>& started, nlohmann::json& violations,
+                         RunOutcome& out) {
+  const double limit = stressTimeLimit(c, config, options);
+  if (started) started(config);
+  out = solveOnce(c, config, limit, options);
+  // An overrun is confirmed by up to two more runs, 0.5 s and 2 s later: on a machine shared
+  // with other jobs a process may wait for a CPU for a while, past any deadline (the CPU time
+  // of such a run is far below its wall time), whereas a late deadline check does not go away
+  // on a re-run. The run's overrun is the smallest seen.
+  const double first_overrun_ms = (out.wall_s - limit) * 1000.0;
+  double overrun_ms = first_overrun_ms;
+  double cpu_s = out.cpu_s;
+  int attempts = 1;
+  for (; overrun_ms > options.max_overrun_ms && attempts < 3; ++attempts) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(attempts == 1 ? 500 : 2000));
+    if (started) started(config);
+    const RunOutcome again = solveOnce(c, config, limit, options);
+    if ((again.wall_s - limit) * 1000.0 < overrun_ms) {
+      overrun_ms = (again.wall_s - limit) * 1000.0;
+      cpu_s = again.cpu_s;
+    }
+  }
+  nlohmann::json run{{"config", config.name()},
+                     {"limit_s", limit},
+                     {"wall_s", limit + overrun_ms / 1000.0},
+                     {"cpu_s", cpu_s},
+                     {"overrun_ms", overrun_ms}};
+  if (attempts > 1) {
+    run["attempts"] = attempts;
+    run["first_overrun_ms"] = first_overrun_ms;
+  }
+  if (!out.exception.empty()) {
+    run["status"] = "EXCEPTION";
+    run["reason"] = shortText(out.exception);
+    addViolation(violations, "exception", config, limit, "exception escaped the solve call: " + out.exception);
+  } else {
+    run["status"] = out.status;
+    if (out.success) {
+      run["soc"] = out.soc;
+      const ValidationResult check = validatePlan(c.map, c.instance, out.plan, c.model);
+      if (!check.valid()) {
+        run["invalid"] = true;
+        addViolation(violations, 
+            "invalid_plan", config, limit,
+            std::string(violationName(check.violation.kind)) + ": " + check.violation.message);
+      }
+    } else {
+      run["reason"] = shortText(out.reason);
+      if (out.reason.empty())
+        addViolation(violations, "empty_reason", config, limit, out.status + " without a reason");
+      if (out.status != "TIMEOUT" && out.status != "INFEASIBLE") {
+        addViolation(violations, "unexpected_status", config, limit, out.status + ": " + out.reason);
+      }
+    }
+  }
+  if (overrun_ms > options.max_overrun_ms) {
+    addViolation(violations, "overrun", config, limit,
+              "the solve call took " + std::to_string(limit + overrun_ms / 1000.0) + " s (" +
+                  std::to_string(cpu_s) + " s of CPU) for a time limit of " +
+                  std::to_string(limit) + " s, in each of " + std::to_string(attempts) +
+                  " runs (status " +
+                  (out.exception.empty() ? out.status : std::string("EXCEPTION")) + ")");
+  }
+  return run;
 }
 
 }  // namespace
@@ -129,78 +204,11 @@ nlohmann::json runStressCase(const StressCase& c, const StressRunOptions& option
   nlohmann::json runs = nlohmann::json::array();
   nlohmann::json violations = nlohmann::json::array();
   auto violation = [&](const std::string& kind, const StressConfig& config, double limit,
-                       const std::string& detail) {
-    violations.push_back({{"kind", kind},
-                          {"config", config.name()},
-                          {"backend", config.backend},
-                          {"mode", config.mode()},
-                          {"limit_s", limit},
-                          {"detail", shortText(detail, 600)}});
-  };
+                       const std::string& detail) { addViolation(violations, kind, config, limit, detail); };
   std::vector<RunOutcome> outcomes;
   for (const StressConfig& config : options.configs) {
-    const double limit = stressTimeLimit(c, config, options);
-    if (started) started(config);
-    RunOutcome out = solveOnce(c, config, limit, options);
-    // An overrun is confirmed by up to two more runs, 0.5 s and 2 s later: on a machine shared
-    // with other jobs a process may wait for a CPU for a while, past any deadline (the CPU time
-    // of such a run is far below its wall time), whereas a late deadline check does not go away
-    // on a re-run. The run's overrun is the smallest seen.
-    const double first_overrun_ms = (out.wall_s - limit) * 1000.0;
-    double overrun_ms = first_overrun_ms;
-    double cpu_s = out.cpu_s;
-    int attempts = 1;
-    for (; overrun_ms > options.max_overrun_ms && attempts < 3; ++attempts) {
-      std::this_thread::sleep_for(std::chrono::milliseconds(attempts == 1 ? 500 : 2000));
-      if (started) started(config);
-      const RunOutcome again = solveOnce(c, config, limit, options);
-      if ((again.wall_s - limit) * 1000.0 < overrun_ms) {
-        overrun_ms = (again.wall_s - limit) * 1000.0;
-        cpu_s = again.cpu_s;
-      }
-    }
-    nlohmann::json run{{"config", config.name()},
-                       {"limit_s", limit},
-                       {"wall_s", limit + overrun_ms / 1000.0},
-                       {"cpu_s", cpu_s},
-                       {"overrun_ms", overrun_ms}};
-    if (attempts > 1) {
-      run["attempts"] = attempts;
-      run["first_overrun_ms"] = first_overrun_ms;
-    }
-    if (!out.exception.empty()) {
-      run["status"] = "EXCEPTION";
-      run["reason"] = shortText(out.exception);
-      violation("exception", config, limit, "exception escaped the solve call: " + out.exception);
-    } else {
-      run["status"] = out.status;
-      if (out.success) {
-        run["soc"] = out.soc;
-        const ValidationResult check = validatePlan(c.map, c.instance, out.plan, c.model);
-        if (!check.valid()) {
-          run["invalid"] = true;
-          violation(
-              "invalid_plan", config, limit,
-              std::string(violationName(check.violation.kind)) + ": " + check.violation.message);
-        }
-      } else {
-        run["reason"] = shortText(out.reason);
-        if (out.reason.empty())
-          violation("empty_reason", config, limit, out.status + " without a reason");
-        if (out.status != "TIMEOUT" && out.status != "INFEASIBLE") {
-          violation("unexpected_status", config, limit, out.status + ": " + out.reason);
-        }
-      }
-    }
-    if (overrun_ms > options.max_overrun_ms) {
-      violation("overrun", config, limit,
-                "the solve call took " + std::to_string(limit + overrun_ms / 1000.0) + " s (" +
-                    std::to_string(cpu_s) + " s of CPU) for a time limit of " +
-                    std::to_string(limit) + " s, in each of " + std::to_string(attempts) +
-                    " runs (status " +
-                    (out.exception.empty() ? out.status : std::string("EXCEPTION")) + ")");
-    }
-    runs.push_back(run);
+    RunOutcome out;
+    runs.push_back(runConfig(c, config, options, started, violations, out));
     out.plan = Plan{};
     outcomes.push_back(std::move(out));
   }

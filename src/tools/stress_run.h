@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "fleet_planner/core/resource_limits.h"
+#include "fleet_planner/runtime/resource_limits.h"
 #include "stress_cases.h"
 
 namespace fleet_planner::cli {

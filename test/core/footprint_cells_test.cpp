@@ -1,5 +1,5 @@
 // Footprint discretisation against hand-computed cell sets (cells overlapped with positive area).
-#include "fleet_planner/core/footprint_cells.h"
+#include "fleet_planner/model/footprint_cells.h"
 
 #include <gtest/gtest.h>
 
@@ -8,7 +8,7 @@
 #include <set>
 #include <utility>
 
-#include "fleet_planner/core/errors.h"
+#include "fleet_planner/runtime/errors.h"
 
 namespace fleet_planner {
 namespace {

@@ -1,9 +1,9 @@
 // Bad instances get typed errors naming the robot; the solvability pre-check names the reason.
-#include "fleet_planner/core/instance_check.h"
+#include "fleet_planner/model/instance_check.h"
 
 #include <gtest/gtest.h>
 
-#include "fleet_planner/core/errors.h"
+#include "fleet_planner/runtime/errors.h"
 #include "test_maps.h"
 #include "test_robots.h"
 

@@ -1,14 +1,14 @@
 // The random instance generator: the paper's distribution, valid and connected placements,
 // and the same instance for the same seed.
-#include "fleet_planner/core/instance_generator.h"
+#include "fleet_planner/io/instance_generator.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "fleet_planner/core/collision.h"
-#include "fleet_planner/core/errors.h"
-#include "fleet_planner/core/instance_check.h"
+#include "fleet_planner/model/collision.h"
+#include "fleet_planner/runtime/errors.h"
+#include "fleet_planner/model/instance_check.h"
 #include "test_maps.h"
 #include "test_robots.h"
 

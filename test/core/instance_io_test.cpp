@@ -1,5 +1,5 @@
 // Tests of instance_io.h: the benchmark's instance format and YAML scenarios.
-#include "fleet_planner/core/instance_io.h"
+#include "fleet_planner/io/instance_io.h"
 
 #include <gtest/gtest.h>
 
@@ -10,8 +10,8 @@
 #include <string>
 #include <vector>
 
-#include "fleet_planner/core/errors.h"
-#include "fleet_planner/core/map_io.h"
+#include "fleet_planner/runtime/errors.h"
+#include "fleet_planner/io/map_io.h"
 #include "test_paths.h"
 
 namespace fleet_planner {

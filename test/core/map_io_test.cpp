@@ -1,6 +1,6 @@
 // Tests of map_io.h: MovingAI maps and ROS map_server maps (YAML + PGM).
-#include "fleet_planner/core/map_io.h"
-#include "fleet_planner/core/resource_limits.h"
+#include "fleet_planner/io/map_io.h"
+#include "fleet_planner/runtime/resource_limits.h"
 
 #include <gtest/gtest.h>
 
@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "fleet_planner/core/errors.h"
+#include "fleet_planner/runtime/errors.h"
 #include "test_paths.h"
 
 namespace fleet_planner {

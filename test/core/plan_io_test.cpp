@@ -1,5 +1,5 @@
 // Tests of plan_io.h: plans as YAML.
-#include "fleet_planner/core/plan_io.h"
+#include "fleet_planner/io/plan_io.h"
 
 #include <gtest/gtest.h>
 
@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "fleet_planner/core/errors.h"
+#include "fleet_planner/runtime/errors.h"
 
 namespace fleet_planner {
 namespace {

@@ -1,14 +1,14 @@
 // The independent plan validator: each kind of violation caught on a crafted plan, valid plans
 // accepted.
-#include "fleet_planner/core/plan_validator.h"
+#include "fleet_planner/model/plan_validator.h"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 
-#include "fleet_planner/core/collision.h"
-#include "fleet_planner/core/fleet_graphs.h"
-#include "fleet_planner/core/random.h"
+#include "fleet_planner/model/collision.h"
+#include "fleet_planner/model/fleet_graphs.h"
+#include "fleet_planner/runtime/random.h"
 #include "test_maps.h"
 #include "test_robots.h"
 

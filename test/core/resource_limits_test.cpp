@@ -1,6 +1,6 @@
 // Resource limits: maps, fleets and state graphs over a limit are refused before they are
 // allocated, with an error naming the limit; the memory guard stops deadlines.
-#include "fleet_planner/core/resource_limits.h"
+#include "fleet_planner/runtime/resource_limits.h"
 
 #include <gtest/gtest.h>
 
@@ -9,10 +9,10 @@
 #include <sstream>
 #include <thread>
 
-#include "fleet_planner/core/deadline.h"
-#include "fleet_planner/core/fleet_graphs.h"
-#include "fleet_planner/core/map_io.h"
-#include "fleet_planner/core/memory_guard.h"
+#include "fleet_planner/runtime/deadline.h"
+#include "fleet_planner/model/fleet_graphs.h"
+#include "fleet_planner/io/map_io.h"
+#include "fleet_planner/runtime/memory_guard.h"
 #include "test_maps.h"
 #include "test_paths.h"
 

@@ -1,10 +1,10 @@
 // State-graph sizes on tiny maps, counted by hand.
-#include "fleet_planner/core/state_graph.h"
+#include "fleet_planner/model/state_graph.h"
 
 #include <gtest/gtest.h>
 
-#include "fleet_planner/core/fleet_graphs.h"
-#include "fleet_planner/core/graph_search.h"
+#include "fleet_planner/model/fleet_graphs.h"
+#include "fleet_planner/model/graph_search.h"
 #include "test_maps.h"
 
 namespace fleet_planner {

@@ -3,7 +3,7 @@
 #include <string>
 #include <vector>
 
-#include "fleet_planner/core/grid_map.h"
+#include "fleet_planner/model/grid_map.h"
 
 namespace fleet_planner::test {
 

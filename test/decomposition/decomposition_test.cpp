@@ -30,9 +30,9 @@
 
 #include "test_maps.h"
 #include "test_robots.h"
-#include "fleet_planner/core/errors.h"
-#include "fleet_planner/core/instance_generator.h"
-#include "fleet_planner/core/random.h"
+#include "fleet_planner/runtime/errors.h"
+#include "fleet_planner/io/instance_generator.h"
+#include "fleet_planner/runtime/random.h"
 #include "fleet_planner/decomposition/legality.h"
 
 namespace fleet_planner {

@@ -10,7 +10,7 @@
 
 #include "test_maps.h"
 #include "test_robots.h"
-#include "fleet_planner/core/footprint_cells.h"
+#include "fleet_planner/model/footprint_cells.h"
 
 namespace fleet_planner {
 namespace {

@@ -7,9 +7,9 @@
 #include <gtest/gtest.h>
 #include <time.h>
 
-#include "fleet_planner/core/instance_check.h"
-#include "fleet_planner/core/instance_generator.h"
-#include "fleet_planner/layered_planner.h"
+#include "fleet_planner/model/instance_check.h"
+#include "fleet_planner/io/instance_generator.h"
+#include "fleet_planner/layered/layered_planner.h"
 #include "fleet_planner/solvers/registry.h"
 #include "test_maps.h"
 #include "test_robots.h"

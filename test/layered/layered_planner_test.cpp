@@ -1,14 +1,14 @@
 // The layered planner: valid and deterministic plans from both backends on seeded random
 // instances, the paper's Figure 1 instances, and the safeguard that merges a failed subproblem.
-#include "fleet_planner/layered_planner.h"
+#include "fleet_planner/layered/layered_planner.h"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <iostream>
 
-#include "fleet_planner/core/errors.h"
-#include "fleet_planner/core/plan_validator.h"
+#include "fleet_planner/runtime/errors.h"
+#include "fleet_planner/model/plan_validator.h"
 #include "fleet_planner/solvers/registry.h"
 #include "random_worlds.h"
 #include "test_maps.h"

@@ -1,17 +1,17 @@
 // The backward search of a pair's goal (pair_goal_search.h): it must agree with a complete
 // forward search (LA-LaCAM) wherever both finish, and it proves pairs that LA-LaCAM cannot.
-#include "fleet_planner/layered/pair_goal_search.h"
+#include "fleet_planner/infeasibility/pair_goal_search.h"
 
 #include <gtest/gtest.h>
 
 #include <iostream>
 #include <optional>
 
-#include "fleet_planner/core/errors.h"
-#include "fleet_planner/core/instance_generator.h"
-#include "fleet_planner/core/plan_validator.h"
-#include "fleet_planner/layered/infeasible_pairs.h"
-#include "fleet_planner/solvers/la_lacam.h"
+#include "fleet_planner/runtime/errors.h"
+#include "fleet_planner/io/instance_generator.h"
+#include "fleet_planner/model/plan_validator.h"
+#include "fleet_planner/infeasibility/infeasible_pairs.h"
+#include "fleet_planner/solvers/lacam/la_lacam.h"
 #include "random_worlds.h"
 #include "test_robots.h"
 

@@ -4,10 +4,10 @@
 
 #include <iostream>
 
-#include "fleet_planner/core/plan_validator.h"
+#include "fleet_planner/model/plan_validator.h"
 #include "fleet_planner/layered/plan_compression.h"
 #include "fleet_planner/layered/plan_refinement.h"
-#include "fleet_planner/layered_planner.h"
+#include "fleet_planner/layered/layered_planner.h"
 #include "random_worlds.h"
 #include "test_maps.h"
 #include "test_robots.h"

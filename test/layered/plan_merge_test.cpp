@@ -6,10 +6,10 @@
 #include <algorithm>
 #include <set>
 
-#include "fleet_planner/core/action.h"
-#include "fleet_planner/core/collision.h"
-#include "fleet_planner/core/fleet_graphs.h"
-#include "fleet_planner/core/random.h"
+#include "fleet_planner/model/action.h"
+#include "fleet_planner/model/collision.h"
+#include "fleet_planner/model/fleet_graphs.h"
+#include "fleet_planner/runtime/random.h"
 #include "fleet_planner/layered/plan_merge.h"
 #include "test_maps.h"
 #include "test_robots.h"

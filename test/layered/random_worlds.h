@@ -6,9 +6,9 @@
 #include <string>
 #include <vector>
 
-#include "fleet_planner/core/errors.h"
-#include "fleet_planner/core/instance_generator.h"
-#include "fleet_planner/core/random.h"
+#include "fleet_planner/runtime/errors.h"
+#include "fleet_planner/io/instance_generator.h"
+#include "fleet_planner/runtime/random.h"
 #include "test_maps.h"
 
 namespace fleet_planner::test {

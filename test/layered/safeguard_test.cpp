@@ -4,12 +4,12 @@
 
 #include <algorithm>
 
-#include "fleet_planner/core/plan_validator.h"
-#include "fleet_planner/layered/infeasible_pairs.h"
+#include "fleet_planner/model/plan_validator.h"
+#include "fleet_planner/infeasibility/infeasible_pairs.h"
 #include "fleet_planner/layered/plan_merge.h"
 #include "fleet_planner/layered/step_aside.h"
 #include "fleet_planner/layered/subproblem_solving.h"
-#include "fleet_planner/layered_planner.h"
+#include "fleet_planner/layered/layered_planner.h"
 #include "test_maps.h"
 #include "test_robots.h"
 

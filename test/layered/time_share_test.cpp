@@ -4,7 +4,7 @@
 #include <map>
 #include <mutex>
 
-#include "fleet_planner/core/plan_validator.h"
+#include "fleet_planner/model/plan_validator.h"
 #include "fleet_planner/layered/subproblem_solving.h"
 #include "fleet_planner/solvers/registry.h"
 #include "test_maps.h"

@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "fleet_planner/ros/backend_loader.h"
-#include "fleet_planner/solvers/la_cbs.h"
+#include "fleet_planner/solvers/cbs/la_cbs.h"
 #include "fleet_planner/solvers/registry.h"
 
 namespace fleet_planner::test {

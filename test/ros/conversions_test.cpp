@@ -3,7 +3,7 @@
 
 #include <cmath>
 
-#include "fleet_planner/core/errors.h"
+#include "fleet_planner/runtime/errors.h"
 #include "fleet_planner/ros/conversions.h"
 #include "ros_test_util.h"
 

@@ -3,6 +3,7 @@
 
 #include <cmath>
 
+#include "fleet_planner/planning/planning_options.h"
 #include "fleet_planner/ros/planner_config.h"
 
 namespace fleet_planner::test {
@@ -30,7 +31,7 @@ TEST(PlannerConfigCheck, EachBadValueIsNamed) {
       {"max_time_limit", [](PlannerConfig& c) { c.max_time_limit = INFINITY; }},
       {"max_time_limit", [](PlannerConfig& c) { c.max_time_limit = 0; }},
       {"decomposition_steps", [](PlannerConfig& c) { c.decomposition_steps = 5; }},
-      {"threads", [](PlannerConfig& c) { c.threads = 0; }},
+      {"threads", [](PlannerConfig& c) { c.threads = -1; }},
       {"busy_policy", [](PlannerConfig& c) { c.busy_policy = "wait"; }},
       {"max_map_cells", [](PlannerConfig& c) { c.max_map_cells = 0; }},
       {"max_robots", [](PlannerConfig& c) { c.max_robots = -5; }},
@@ -87,6 +88,51 @@ TEST(PlannerConfigCheck, PoliciesBecomeCoreOptions) {
   EXPECT_TRUE(config.occupancyPolicy().unknown_is_free);
   EXPECT_EQ(config.occupancyPolicy().occupied_threshold, 50);
   EXPECT_DOUBLE_EQ(config.poseTolerance().heading, config.heading_tolerance);
+}
+
+TEST(PlannerConfigCheck, BackendsAndTheirParametersAreCheckedByName) {
+  EXPECT_TRUE(checkPlannerBackends(PlannerConfig{}).empty());
+  PlannerConfig config;
+  config.fallback = "teleport";
+  auto errors = checkPlannerBackends(config);
+  ASSERT_EQ(errors.size(), 1u);
+  EXPECT_EQ(errors[0].rfind("fallback: ", 0), 0u) << errors[0];
+  EXPECT_TRUE(mentions(errors, "teleport") && mentions(errors, "la_lns")) << errors[0];  // lists the known ones
+
+  config = PlannerConfig{};
+  config.backend = "la_cbs";  // serial: a parallel fallback cannot take its moving obstacles
+  config.fallback = "la_lacam";
+  errors = checkPlannerBackends(config);
+  ASSERT_EQ(errors.size(), 1u);
+  EXPECT_EQ(errors[0].rfind("fallback: ", 0), 0u) << errors[0];
+
+  config = PlannerConfig{};
+  config.backend_parameters["la_lns"]["neighbourhood"] = 4;  // a typo
+  errors = checkPlannerBackends(config);
+  ASSERT_EQ(errors.size(), 1u);
+  EXPECT_EQ(errors[0].rfind("backend_parameters: ", 0), 0u) << errors[0];
+  EXPECT_TRUE(mentions(errors, "neighbourhood") && mentions(errors, "neighborhood_size")) << errors[0];
+
+  config.backend_parameters.clear();
+  config.backend_parameters["la_lns"]["neighborhood_size"] = 0;  // out of range
+  EXPECT_TRUE(mentions(checkPlannerBackends(config), "la_lns.neighborhood_size must be an integer in 1.."));
+  config.backend_parameters["la_lns"]["neighborhood_size"] = 12;
+  EXPECT_TRUE(checkPlannerBackends(config).empty());
+}
+
+TEST(PlannerConfigCheck, TheNodesDefaultsAreThePlanningDefaults) {
+  const PlanningOptions node = planningOptions(PlannerConfig{});
+  const PlanningOptions core;
+  EXPECT_EQ(node.backend, core.backend);
+  EXPECT_EQ(node.fallback, core.fallback);
+  EXPECT_EQ(node.decompose, core.decompose);
+  EXPECT_EQ(node.last_step, core.last_step);
+  EXPECT_EQ(node.threads, core.threads);
+  EXPECT_EQ(node.refine, core.refine);
+  EXPECT_EQ(node.compress, core.compress);
+  EXPECT_EQ(node.time_limit, core.time_limit);
+  EXPECT_EQ(node.limits.max_memory_mb, core.limits.max_memory_mb);
+  EXPECT_TRUE(node.backend_parameters.empty());
 }
 
 }  // namespace

@@ -3,7 +3,7 @@
 // allocated, and the service goes on planning requests within the limits.
 #include <gtest/gtest.h>
 
-#include "fleet_planner/core/resource_limits.h"
+#include "fleet_planner/runtime/resource_limits.h"
 #include "fleet_planner/ros/fleet_planning_service.h"
 #include "ros_test_util.h"
 

@@ -8,8 +8,8 @@
 #include <fleet_planner/PlanFleet.h>
 #include <nav_msgs/OccupancyGrid.h>
 
-#include "fleet_planner/core/instance.h"
-#include "fleet_planner/core/plan.h"
+#include "fleet_planner/model/instance.h"
+#include "fleet_planner/model/plan.h"
 
 namespace fleet_planner::test {
 

@@ -10,8 +10,8 @@
 #include <vector>
 
 #include "exhaustive_search.h"
-#include "fleet_planner/core/errors.h"
-#include "fleet_planner/core/instance_check.h"
+#include "fleet_planner/runtime/errors.h"
+#include "fleet_planner/model/instance_check.h"
 #include "fleet_planner/solvers/registry.h"
 #include "solver_test_util.h"
 #include "test_maps.h"

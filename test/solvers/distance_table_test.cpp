@@ -1,5 +1,5 @@
 // Distance tables (distance_table.h): 2-byte storage gives back every distance it was given.
-#include "fleet_planner/solvers/distance_table.h"
+#include "fleet_planner/solvers/search/distance_table.h"
 
 #include <gtest/gtest.h>
 

@@ -10,8 +10,8 @@
 #include <utility>
 #include <vector>
 
-#include "fleet_planner/core/collision.h"
-#include "fleet_planner/core/footprint_cells.h"
+#include "fleet_planner/model/collision.h"
+#include "fleet_planner/model/footprint_cells.h"
 
 namespace fleet_planner::test {
 

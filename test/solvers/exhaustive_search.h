@@ -13,10 +13,10 @@
 /// at its target forever. The goal is mask = all robots, so a robot's accumulated cost is the
 /// time step it commits, and the optimum equals the minimum over plans of the sum of the time
 /// steps at which each robot last arrives at its target (the SOC of plan.h).
-#include "fleet_planner/core/action.h"
-#include "fleet_planner/core/grid_map.h"
-#include "fleet_planner/core/instance.h"
-#include "fleet_planner/core/plan.h"
+#include "fleet_planner/model/action.h"
+#include "fleet_planner/model/grid_map.h"
+#include "fleet_planner/model/instance.h"
+#include "fleet_planner/model/plan.h"
 
 namespace fleet_planner::test {
 

@@ -4,7 +4,7 @@
 
 #include <gtest/gtest.h>
 
-#include "fleet_planner/core/plan_validator.h"
+#include "fleet_planner/model/plan_validator.h"
 #include "solver_test_util.h"
 #include "test_maps.h"
 

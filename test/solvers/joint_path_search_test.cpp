@@ -5,13 +5,13 @@
 #include <gtest/gtest.h>
 
 #include "exhaustive_search.h"
-#include "fleet_planner/core/errors.h"
-#include "fleet_planner/core/plan_validator.h"
-#include "fleet_planner/core/random.h"
-#include "fleet_planner/solvers/joint_path_search.h"
+#include "fleet_planner/runtime/errors.h"
+#include "fleet_planner/model/plan_validator.h"
+#include "fleet_planner/runtime/random.h"
+#include "fleet_planner/solvers/search/joint_path_search.h"
 #include "fleet_planner/solvers/registry.h"
-#include "fleet_planner/solvers/search_space.h"
-#include "fleet_planner/solvers/solve_common.h"
+#include "fleet_planner/solvers/search/search_space.h"
+#include "fleet_planner/solvers/search/solve_common.h"
 #include "solver_test_util.h"
 #include "test_maps.h"
 

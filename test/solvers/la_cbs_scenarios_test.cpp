@@ -4,7 +4,7 @@
 
 #include <vector>
 
-#include "fleet_planner/solvers/pairwise_delay.h"
+#include "fleet_planner/solvers/cbs/pairwise_delay.h"
 #include "solver_test_util.h"
 #include "test_maps.h"
 

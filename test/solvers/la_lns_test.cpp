@@ -1,18 +1,18 @@
 // LA-LNS and its two low levels: the soft path table against the backends' conflict code, the
 // safe interval search's long waits, and moving obstacles. Every plan goes through the
 // independent validator.
-#include "fleet_planner/solvers/la_lns.h"
+#include "fleet_planner/solvers/lns/la_lns.h"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 
-#include "fleet_planner/core/plan_validator.h"
-#include "fleet_planner/core/random.h"
+#include "fleet_planner/model/plan_validator.h"
+#include "fleet_planner/runtime/random.h"
 #include "fleet_planner/solvers/registry.h"
-#include "fleet_planner/solvers/safe_interval_search.h"
-#include "fleet_planner/solvers/soft_path_table.h"
-#include "fleet_planner/solvers/space_time_astar.h"
+#include "fleet_planner/solvers/search/safe_interval_search.h"
+#include "fleet_planner/solvers/search/soft_path_table.h"
+#include "fleet_planner/solvers/search/space_time_astar.h"
 #include "pocket_corridor.h"
 #include "solver_test_util.h"
 #include "test_maps.h"

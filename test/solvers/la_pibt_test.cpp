@@ -4,10 +4,10 @@
 
 #include <numeric>
 
-#include "fleet_planner/core/collision.h"
-#include "fleet_planner/core/instance_generator.h"
-#include "fleet_planner/solvers/la_pibt.h"
-#include "fleet_planner/solvers/space_time_astar.h"
+#include "fleet_planner/model/collision.h"
+#include "fleet_planner/io/instance_generator.h"
+#include "fleet_planner/solvers/lacam/la_pibt.h"
+#include "fleet_planner/solvers/search/space_time_astar.h"
 #include "solver_test_util.h"
 #include "test_maps.h"
 

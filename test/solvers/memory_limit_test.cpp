@@ -3,9 +3,9 @@
 // is killed; the layered planner reports the same.
 #include <gtest/gtest.h>
 
-#include "fleet_planner/core/memory_guard.h"
-#include "fleet_planner/core/resource_limits.h"
-#include "fleet_planner/layered_planner.h"
+#include "fleet_planner/runtime/memory_guard.h"
+#include "fleet_planner/runtime/resource_limits.h"
+#include "fleet_planner/layered/layered_planner.h"
 #include "fleet_planner/solvers/registry.h"
 #include "solver_test_util.h"
 #include "test_maps.h"

@@ -1,6 +1,6 @@
 // LA-LNS's neighbourhood size: it doubles after a stall, stops at the subproblem's size, and
 // falls back to its base on a new lowest number of colliding pairs.
-#include "fleet_planner/solvers/neighborhood_growth.h"
+#include "fleet_planner/solvers/lns/neighborhood_growth.h"
 
 #include <gtest/gtest.h>
 

@@ -5,10 +5,10 @@
 
 #include <algorithm>
 
-#include "fleet_planner/core/plan_validator.h"
-#include "fleet_planner/solvers/ordered_repair.h"
-#include "fleet_planner/solvers/solve_common.h"
-#include "fleet_planner/solvers/space_time_astar.h"
+#include "fleet_planner/model/plan_validator.h"
+#include "fleet_planner/solvers/lns/ordered_repair.h"
+#include "fleet_planner/solvers/search/solve_common.h"
+#include "fleet_planner/solvers/search/space_time_astar.h"
 #include "solver_test_util.h"
 #include "test_maps.h"
 

@@ -6,10 +6,10 @@
 
 #include <algorithm>
 
-#include "fleet_planner/core/random.h"
-#include "fleet_planner/solvers/path_splice.h"
-#include "fleet_planner/solvers/safe_interval_search.h"
-#include "fleet_planner/solvers/space_time_astar.h"
+#include "fleet_planner/runtime/random.h"
+#include "fleet_planner/solvers/lns/path_splice.h"
+#include "fleet_planner/solvers/search/safe_interval_search.h"
+#include "fleet_planner/solvers/search/space_time_astar.h"
 #include "pocket_corridor.h"
 #include "solver_test_util.h"
 #include "test_maps.h"

@@ -4,8 +4,8 @@
 /// shortest path, already in a soft path table; a second robot, given, shares the corridor.
 #include <utility>
 
-#include "fleet_planner/solvers/soft_path_table.h"
-#include "fleet_planner/solvers/space_time_astar.h"
+#include "fleet_planner/solvers/search/soft_path_table.h"
+#include "fleet_planner/solvers/search/space_time_astar.h"
 #include "solver_test_util.h"
 #include "test_maps.h"
 

@@ -5,9 +5,9 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "fleet_planner/core/collision.h"
-#include "fleet_planner/core/footprint_cells.h"
-#include "fleet_planner/core/instance_check.h"
+#include "fleet_planner/model/collision.h"
+#include "fleet_planner/model/footprint_cells.h"
+#include "fleet_planner/model/instance_check.h"
 #include "fleet_planner/solvers/registry.h"
 
 namespace fleet_planner::test {

@@ -9,11 +9,11 @@
 #include <string>
 #include <vector>
 
-#include "fleet_planner/core/fleet_graphs.h"
-#include "fleet_planner/core/grid_map.h"
-#include "fleet_planner/core/instance.h"
-#include "fleet_planner/core/plan.h"
-#include "fleet_planner/core/plan_validator.h"
+#include "fleet_planner/model/fleet_graphs.h"
+#include "fleet_planner/model/grid_map.h"
+#include "fleet_planner/model/instance.h"
+#include "fleet_planner/model/plan.h"
+#include "fleet_planner/model/plan_validator.h"
 #include "fleet_planner/solvers/solver.h"
 
 #include "test_robots.h"

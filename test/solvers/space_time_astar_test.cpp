@@ -1,6 +1,6 @@
 // The low-level search under area constraints that cut the target off from some time on: it
 // must tell "no path" (or find the one before the cut) without filling space-time.
-#include "fleet_planner/solvers/space_time_astar.h"
+#include "fleet_planner/solvers/search/space_time_astar.h"
 
 #include <gtest/gtest.h>
 
@@ -8,10 +8,10 @@
 #include <limits>
 #include <memory>
 
-#include "fleet_planner/core/errors.h"
-#include "fleet_planner/core/random.h"
+#include "fleet_planner/runtime/errors.h"
+#include "fleet_planner/runtime/random.h"
 
-#include "fleet_planner/solvers/search_space.h"
+#include "fleet_planner/solvers/search/search_space.h"
 #include "solver_test_util.h"
 #include "test_maps.h"
 

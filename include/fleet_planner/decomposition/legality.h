@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "fleet_planner/core/fleet_graphs.h"
-#include "fleet_planner/core/instance.h"
+#include "fleet_planner/model/fleet_graphs.h"
+#include "fleet_planner/model/instance.h"
 
 namespace fleet_planner {
 

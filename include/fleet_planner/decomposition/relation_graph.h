@@ -17,9 +17,9 @@
 #include <memory>
 #include <vector>
 
-#include "fleet_planner/core/deadline.h"
-#include "fleet_planner/core/fleet_graphs.h"
-#include "fleet_planner/core/instance.h"
+#include "fleet_planner/runtime/deadline.h"
+#include "fleet_planner/model/fleet_graphs.h"
+#include "fleet_planner/model/instance.h"
 
 namespace fleet_planner {
 

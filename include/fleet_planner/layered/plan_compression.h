@@ -10,9 +10,9 @@
 /// conflict-free. Paths only get shorter, so every robot's cost and the makespan can only drop.
 #include <vector>
 
-#include "fleet_planner/core/deadline.h"
-#include "fleet_planner/core/fleet_graphs.h"
-#include "fleet_planner/core/plan.h"
+#include "fleet_planner/runtime/deadline.h"
+#include "fleet_planner/model/fleet_graphs.h"
+#include "fleet_planner/model/plan.h"
 
 namespace fleet_planner {
 

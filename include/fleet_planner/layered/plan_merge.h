@@ -4,8 +4,8 @@
 /// with no earlier path.
 #include <vector>
 
-#include "fleet_planner/core/fleet_graphs.h"
-#include "fleet_planner/core/plan.h"
+#include "fleet_planner/model/fleet_graphs.h"
+#include "fleet_planner/model/plan.h"
 
 namespace fleet_planner {
 

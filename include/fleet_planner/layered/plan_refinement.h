@@ -22,10 +22,10 @@
 /// deadline cutting in, the result is deterministic.
 #include <vector>
 
-#include "fleet_planner/core/deadline.h"
-#include "fleet_planner/core/fleet_graphs.h"
-#include "fleet_planner/core/instance.h"
-#include "fleet_planner/core/plan.h"
+#include "fleet_planner/runtime/deadline.h"
+#include "fleet_planner/model/fleet_graphs.h"
+#include "fleet_planner/model/instance.h"
+#include "fleet_planner/model/plan.h"
 
 namespace fleet_planner {
 

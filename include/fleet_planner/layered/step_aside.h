@@ -8,8 +8,8 @@
 /// from and back to where they stand.
 #include <vector>
 
-#include "fleet_planner/core/fleet_graphs.h"
-#include "fleet_planner/core/instance.h"
+#include "fleet_planner/model/fleet_graphs.h"
+#include "fleet_planner/model/instance.h"
 #include "fleet_planner/solvers/solver.h"
 
 namespace fleet_planner {

@@ -34,10 +34,11 @@
 #include <utility>
 #include <vector>
 
-#include "fleet_planner/core/deadline.h"
-#include "fleet_planner/core/fleet_graphs.h"
-#include "fleet_planner/core/instance.h"
-#include "fleet_planner/core/plan.h"
+#include "fleet_planner/runtime/deadline.h"
+#include "fleet_planner/model/fleet_graphs.h"
+#include "fleet_planner/model/instance.h"
+#include "fleet_planner/model/plan.h"
+#include "fleet_planner/layered/time_budget.h"
 #include "fleet_planner/solvers/solver.h"
 
 namespace fleet_planner {
@@ -82,8 +83,10 @@ struct SubproblemSolvingOptions {
   /// obstacles if `backend` does, and it is tried as `backend` is: around its cluster's earlier
   /// paths within a budget, then with them at their targets and delayed (delayed_in_cluster).
   std::string fallback;
-  /// Part of a subproblem's time share left to the fallback (when there is one).
-  double fallback_share = 0.5;
+  /// Options of the backends by name (backend_parameters.h).
+  BackendParameters backend_parameters;
+  /// Time shares, pair proofs, the serial chain's budget, step-aside reach (time_budget.h).
+  TimeBudget budget;
   int threads = 1;
   std::uint64_t seed = 0;
   /// The decomposition's entangled pairs (Decomposition::entangled_pairs): the only pairs of

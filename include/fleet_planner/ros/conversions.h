@@ -11,9 +11,9 @@
 #include <geometry_msgs/Pose2D.h>
 #include <nav_msgs/OccupancyGrid.h>
 
-#include "fleet_planner/core/footprint.h"
-#include "fleet_planner/core/grid_map.h"
-#include "fleet_planner/core/types.h"
+#include "fleet_planner/model/footprint.h"
+#include "fleet_planner/model/grid_map.h"
+#include "fleet_planner/model/types.h"
 
 namespace fleet_planner {
 

@@ -20,8 +20,8 @@
 #include <fleet_planner/FleetFootprints.h>
 #include <fleet_planner/PlanFleet.h>
 
-#include "fleet_planner/core/fleet_graphs.h"
-#include "fleet_planner/core/grid_map.h"
+#include "fleet_planner/planning/graph_cache.h"
+#include "fleet_planner/model/grid_map.h"
 #include "fleet_planner/ros/planner_config.h"
 
 namespace fleet_planner {
@@ -83,15 +83,6 @@ class FleetPlanningService {
   const PlannerConfig& config() const { return config_; }
 
  private:
-  struct Graphs {
-    std::uint64_t map_version = 0;
-    std::vector<Footprint> footprints;
-    std::shared_ptr<const FleetGraphs> graphs;
-  };
-  /// The fleet's state graphs; reused when the map and the footprints are those of the last call.
-  /// Throws DeadlineExpired if the deadline passes while they are built.
-  std::shared_ptr<const FleetGraphs> graphsFor(const MapSnapshot& map, const std::vector<Footprint>& footprints,
-                                               bool& cached, const Deadline& deadline);
   /// checkRequest()'s checks: false with the answer in `call` for a bad request; otherwise the
   /// resolved time limit and backend name.
   bool checkFields(const fleet_planner::PlanFleet::Request& request, PlanCall& call, double& time_limit,
@@ -105,8 +96,7 @@ class FleetPlanningService {
   std::uint64_t map_version_ = 0;
   std::string map_refused_;  ///< why the last map was refused (max_map_cells); empty once one is taken
   std::map<std::string, fleet_planner::RobotFootprint> footprints_;
-  std::mutex graphs_mutex_;
-  Graphs graphs_;
+  GraphCache graphs_;  ///< the last call's state graphs, reused for the same map and footprints
 };
 
 /// "SUCCESS", "TIMEOUT", ... for a PlanFleet response status ("STATUS_<n>" if unknown).

@@ -7,7 +7,8 @@
 
 #include <ros/node_handle.h>
 
-#include "fleet_planner/core/resource_limits.h"
+#include "fleet_planner/runtime/resource_limits.h"
+#include "fleet_planner/planning/planning_options.h"
 #include "fleet_planner/ros/conversions.h"
 
 namespace fleet_planner {
@@ -21,10 +22,12 @@ struct PlannerConfig {
   double max_time_limit = 60.0;
   bool decomposition = true;         ///< default: Layered LA-MAPF (false: raw)
   int decomposition_steps = 4;       ///< default last decomposition step, 1..4
-  int threads = 2;                   ///< threads for graphs and for solving subproblems
+  int threads = 0;                   ///< threads for graphs and subproblems; 0: the machine's cores
   /// Backend tried on a subproblem that the backend fails, before the safeguard merges it
   /// (LayeredOptions::fallback); "" for none.
   std::string fallback = "la_lns";
+  /// Options of the backends by name: {backend: {option: value}} (backend_parameters.h).
+  BackendParameters backend_parameters;
   bool refine = true;                ///< replan delayed robots after merging (plan_refinement.h)
   bool compress = true;              ///< drop the waits no conflict needs (plan_compression.h)
   std::string busy_policy = "reject";  ///< a call while another plans: "reject" (BUSY) or "queue"
@@ -60,9 +63,22 @@ struct PlannerConfig {
   ResourceLimits resourceLimits() const { return {max_map_cells, max_robots, max_memory_mb}; }
 };
 
+/// The planning options of a call with this configuration's defaults (the request may override
+/// backend, decomposition, steps, time limit and seed).
+PlanningOptions planningOptions(const PlannerConfig& config);
+
+/// Every parameter the node reads, in config/planner.yaml's order (docs/ros.md lists the same).
+const std::vector<std::string>& plannerParameterNames();
+
 /// Every problem with the configuration, one line each, naming the parameter ("time_limit must be
 /// > 0 (got -1)"); empty when it is usable.
 std::vector<std::string> checkPlannerConfig(const PlannerConfig& config);
+
+/// The configuration's backends against the registered ones (once the plugins are loaded): every
+/// problem with `backend`, `fallback` (unknown, ambiguous, or parallel for a serial backend) and
+/// `backend_parameters` (unknown backend or option, value out of range), one line each, naming
+/// the parameter. Empty when a call can use them.
+std::vector<std::string> checkPlannerBackends(const PlannerConfig& config);
 
 /// Reads the parameters of `nh` (the node's private handle) over the defaults. Throws InvalidInput
 /// naming the parameter for one of the wrong type; values are not range-checked here.

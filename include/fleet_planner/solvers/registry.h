@@ -19,6 +19,15 @@ bool registerSolver(const std::string& name, SolverFactory factory);
 /// A new solver of that name; throws InvalidInput listing the known names if there is none.
 std::unique_ptr<Solver> makeSolver(const std::string& name);
 
+/// A new solver of that name configured with `parameters[name]` (or, for a plugin registered as
+/// "package/name", `parameters[name()]`) when there are any; throws InvalidInput for an unknown
+/// name or option (Solver::configure).
+std::unique_ptr<Solver> makeSolver(const std::string& name, const BackendParameters& parameters);
+
+/// Every problem with `parameters`, one line each: a backend that is not registered, an option it
+/// does not know, a value out of range. Empty when every entry configures its backend.
+std::vector<std::string> checkBackendParameters(const BackendParameters& parameters);
+
 /// Registered names, sorted.
 std::vector<std::string> solverNames();
 

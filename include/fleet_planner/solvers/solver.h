@@ -9,11 +9,12 @@
 #include <utility>
 #include <vector>
 
-#include "fleet_planner/core/deadline.h"
-#include "fleet_planner/core/fleet_graphs.h"
-#include "fleet_planner/core/grid_map.h"
-#include "fleet_planner/core/instance.h"
-#include "fleet_planner/core/plan.h"
+#include "fleet_planner/runtime/deadline.h"
+#include "fleet_planner/model/fleet_graphs.h"
+#include "fleet_planner/model/grid_map.h"
+#include "fleet_planner/model/instance.h"
+#include "fleet_planner/model/plan.h"
+#include "fleet_planner/solvers/backend_parameters.h"
 
 namespace fleet_planner {
 
@@ -48,10 +49,12 @@ struct Subproblem {
 };
 
 /// ResourceLimit: the deadline's memory guard tripped, or a search's tables would not fit in
-/// max_memory_mb (resource_limits.h); the reason names the limit.
-enum class SolveStatus { Success, Timeout, Infeasible, Cancelled, InvalidInput, ResourceLimit };
+/// max_memory_mb (resource_limits.h); the reason names the limit. InternalError: a plan that
+/// fails the independent validator (a defect of this package, never an input problem).
+enum class SolveStatus { Success, Timeout, Infeasible, Cancelled, InvalidInput, ResourceLimit, InternalError };
 
-/// "SUCCESS", "TIMEOUT", "INFEASIBLE", "CANCELLED", "INVALID_INPUT", "RESOURCE_LIMIT".
+/// "SUCCESS", "TIMEOUT", "INFEASIBLE", "CANCELLED", "INVALID_INPUT", "RESOURCE_LIMIT",
+/// "INTERNAL_ERROR".
 const char* statusName(SolveStatus status);
 
 struct SolveStats {
@@ -79,6 +82,10 @@ class Solver {
   virtual std::string name() const = 0;
   /// Serial backends plan around MovingObstacle paths; parallel ones only take static footprints.
   virtual bool avoidsMovingObstacles() const = 0;
+  /// Sets the backend's options by name (backend_parameters.h). Throws InvalidInput naming the
+  /// backend and the option for an unknown name or a value out of range, listing the known
+  /// names; the options are unchanged then. A backend without options accepts only none.
+  virtual void configure(const BackendOptionValues& values);
   /// Plans the subproblem. Never throws for planning outcomes; returns within ~50 ms of the
   /// deadline; same input and seed give the same result.
   virtual SolveResult solve(const Subproblem& problem) = 0;

@@ -1,0 +1,40 @@
+#pragma once
+/// Proof that an instance has no plan (beyond the paper): two of its robots that cannot both
+/// reach their targets even alone on the map. Dropping robots from a valid plan leaves a valid
+/// plan, so such a pair makes the whole instance infeasible. LA-LaCAM decides a pair: its search
+/// over joint configurations is complete, and it ends either with a plan or with every reachable
+/// configuration explored. Where it runs out of expansions first (an open map has many
+/// configurations to explore), the search backwards from the pair's goal (pair_goal_search.h)
+/// may still decide it. Used on the decomposition's entangled pairs and on subproblems that
+/// failed, where a knot of robots that no backend unties may be no knot but an impossibility
+/// (e.g. a wide robot whose start and target fill the only corridor that another robot must
+/// cross).
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "fleet_planner/runtime/deadline.h"
+#include "fleet_planner/model/fleet_graphs.h"
+#include "fleet_planner/model/instance.h"
+#include "fleet_planner/solvers/solver.h"
+
+namespace fleet_planner {
+
+/// Robots a and b (instance indices of `around.instance`) searched by LA-LaCAM alone, among
+/// `around`'s static footprints (blocked and returning) and nothing else: no other robot, no
+/// moving obstacle. INFEASIBLE proves that they cannot both reach their targets among those
+/// obstacles, and so that no problem containing them (with those obstacles or fewer) has a plan;
+/// SUCCESS that they can; anything else decides nothing. The search stops after
+/// `max_expansions` or at the deadline.
+SolveResult searchPairAlone(const Subproblem& around, int a, int b, long long max_expansions, const Deadline& deadline);
+
+/// The first of `pairs` (instance indices) proven unable to reach both targets, as a message
+/// naming both robots; nullopt if none is proven (each pair's forward search stops after
+/// `max_expansions`, its backward search after a million configurations, and all stop at the
+/// deadline).
+std::optional<std::string> findInfeasiblePair(const Instance& instance, const FleetGraphs& graphs,
+                                              const std::vector<std::pair<int, int>>& pairs,
+                                              long long max_expansions, const Deadline& deadline);
+
+}  // namespace fleet_planner

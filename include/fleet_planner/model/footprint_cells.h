@@ -1,0 +1,50 @@
+#pragma once
+/// A footprint discretised on the grid (paper: Preliminaries, "Collision detection"): the cells
+/// it covers at each heading, [a_i, s], and the cells it sweeps during each action,
+/// [a_i, s, s'], all relative to the cell the robot stands on.
+///
+/// - A cell is covered when the footprint overlaps the cell's square with positive area.
+/// - A move sweeps the union of the footprints before and after.
+/// - A rotation sweeps both footprints and every cell the footprint passes over while it turns
+///   90 degrees about its origin. This is exact for footprints that are star-shaped about the
+///   origin (circles, blocks and convex polygons containing the origin, most real robots); for
+///   other polygons it is the sweep of their star hull (the union of triangles from the origin
+///   to each edge), a superset, so collision checks stay safe.
+#include <array>
+#include <functional>
+
+#include "fleet_planner/model/action.h"
+#include "fleet_planner/model/cell_set.h"
+#include "fleet_planner/model/footprint.h"
+
+namespace fleet_planner {
+
+class FootprintCells {
+ public:
+  /// Throws InvalidInput if the footprint is not usable (see footprintProblem()).
+  explicit FootprintCells(const Footprint& footprint);
+
+  const Footprint& footprint() const { return footprint_; }
+  /// Cells covered at `heading`, relative to the robot's cell.
+  const CellSet& body(int heading) const { return body_[heading]; }
+  /// Cells covered while doing `action` from `heading`, relative to the starting cell.
+  const CellSet& swept(int heading, Action action) const {
+    return swept_[heading][static_cast<int>(action)];
+  }
+  /// Largest squared length of any offset in any body or sweep.
+  int maxNormSq() const { return max_norm_sq_; }
+
+  /// Same cells in every body and sweep: robots with such footprints share one state graph.
+  bool sameCells(const FootprintCells& other) const;
+  /// Hash of the cells, consistent with sameCells().
+  std::size_t cellsHash() const { return hash_; }
+
+ private:
+  Footprint footprint_;
+  std::array<CellSet, kHeadings> body_;
+  std::array<std::array<CellSet, kActions>, kHeadings> swept_;
+  int max_norm_sq_ = 0;
+  std::size_t hash_ = 0;
+};
+
+}  // namespace fleet_planner

@@ -1,0 +1,33 @@
+#pragma once
+/// An LA-MAPF instance: robots with footprints, start and target states.
+#include <string>
+#include <vector>
+
+#include "fleet_planner/model/footprint.h"
+#include "fleet_planner/model/types.h"
+
+namespace fleet_planner {
+
+struct Robot {
+  std::string id;  ///< unique name, used in every message about the robot
+  Footprint footprint;
+  GridPose start;
+  GridPose target;
+  std::string source;  ///< where it was read ("file:line"), for messages; may be empty
+};
+
+struct Instance {
+  std::vector<Robot> robots;
+  std::string map_file;  ///< the map the instance refers to, if the format names one
+};
+
+/// "robot '<id>'" plus " (<source>)" when the source is known: the prefix of robot messages.
+std::string robotLabel(const Robot& robot);
+
+/// The benchmark's "K mixed" protocol: the first ceil(K/2) circles interleaved with the first
+/// floor(K/2) non-circles (blocks and polygons) of the pool, in pool order, circle first; where
+/// one kind runs out, the rest are of the other kind. Throws InvalidInput if K is not in
+/// [1, pool size].
+Instance selectMixed(const Instance& pool, int k);
+
+}  // namespace fleet_planner

@@ -1,0 +1,50 @@
+#pragma once
+/// The one way in: plans a fleet on a map with PlanningOptions. The node, the CLI and the stress
+/// tool call this and nothing below it. It owns what every call needs in the same order:
+///   memory guard and deadline (from PlanningCall::started) -> state graphs (cached) ->
+///   solvability pre-check -> Layered LA-MAPF or raw (layered_planner.h: decomposition, solving,
+///   merging, refinement, compression) -> the independent validator.
+/// Outcomes are values (status and reason); only bad options (InvalidInput) and a fleet whose
+/// graphs exceed the limits before any search (ResourceLimitError) throw.
+#include <atomic>
+#include <chrono>
+#include <cstdint>
+#include <string>
+
+#include "fleet_planner/layered/layered_planner.h"
+#include "fleet_planner/model/instance_check.h"
+#include "fleet_planner/planning/graph_cache.h"
+#include "fleet_planner/planning/planning_options.h"
+
+namespace fleet_planner {
+
+/// What a call brings besides the problem and the options.
+struct PlanningCall {
+  /// The time limit counts from here (a node passes when the request arrived).
+  std::chrono::steady_clock::time_point started = std::chrono::steady_clock::now();
+  const std::atomic<bool>* cancel = nullptr;  ///< set: the call stops early, CANCELLED
+  GraphCache* cache = nullptr;                ///< null: the graphs are built for this call alone
+  std::uint64_t map_version = 0;              ///< the cache's key with the footprints
+};
+
+struct PlanningResult : LayeredResult {
+  std::string backend;   ///< as used
+  std::string fallback;  ///< as used ("" for none)
+  int threads = 1;       ///< as used
+  bool layered = true;   ///< as used: decomposed (false: raw)
+  /// The pre-check's per-robot problems (unreachable target, start or target overlaps): the
+  /// status is INFEASIBLE when there are any, and nothing was planned.
+  SolvabilityReport precheck;
+  double precompute_s = 0.0;   ///< building the state graphs (0 when cached)
+  bool graphs_cached = false;
+  double time_s = 0.0;         ///< the whole call, from PlanningCall::started
+};
+
+/// Plans `instance` on `map`. A plan returned with SUCCESS has passed the validator; a plan
+/// that fails it is INTERNAL_ERROR. Throws InvalidInput listing every problem of `options`
+/// (checkPlanningOptions), ResourceLimitError for graphs that would not fit in
+/// options.limits.max_memory_mb.
+PlanningResult planFleet(const GridMap& map, const Instance& instance, const PlanningOptions& options,
+                         const PlanningCall& call = {});
+
+}  // namespace fleet_planner

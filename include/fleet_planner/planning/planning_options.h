@@ -1,0 +1,55 @@
+#pragma once
+/// The options of one planning call, with the package's defaults in one place: the node's
+/// parameters (config/planner.yaml) and the CLI's flags map onto these fields, and a field that
+/// neither sets keeps the value here. Configuration that caches depend on (the map, the
+/// footprints) is not here: it is the call's input.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "fleet_planner/layered/time_budget.h"
+#include "fleet_planner/model/action.h"
+#include "fleet_planner/runtime/resource_limits.h"
+#include "fleet_planner/solvers/backend_parameters.h"
+
+namespace fleet_planner {
+
+struct PlanningOptions {
+  /// Backend of every subproblem: "la_lacam", "la_cbs", "la_lns" or any registered name.
+  std::string backend = "la_lacam";
+  /// Backend tried on a subproblem that `backend` fails without proving it infeasible, in the
+  /// rest of its time share, before the safeguard merges it ("": none). A serial backend needs a
+  /// serial fallback.
+  std::string fallback = "la_lns";
+  /// Options of the backends by name, e.g. {"la_lns": {"neighborhood_size": 12}}.
+  BackendParameters backend_parameters;
+  bool decompose = true;  ///< Layered LA-MAPF; false: the whole fleet as one subproblem (raw)
+  int last_step = 4;      ///< decomposition steps 1..4 (clusters, bipartition, levels, bipartition)
+  /// Threads for state graphs, relation graphs and subproblems; 0: the machine's cores. The plan
+  /// does not depend on it.
+  int threads = 0;
+  /// Serial backends: plan clusters independently and merge them by delays (false: one chain,
+  /// every level around all earlier paths).
+  bool independent_clusters = true;
+  bool refine = true;    ///< replan robots one at a time around the others after merging
+  bool compress = true;  ///< drop every wait that no conflict needs
+  std::uint64_t seed = 0;
+  /// Seconds for the whole call, state graphs included, counted from PlanningCall::started.
+  double time_limit = 10.0;
+  /// max_memory_mb bounds the call's resident memory (graphs refused, searches stopped:
+  /// RESOURCE_LIMIT); the map and robot limits are checked by the loaders and the node.
+  ResourceLimits limits;
+  ActionModel model;
+  /// How the deadline is divided between the stages (time_budget.h).
+  TimeBudget budget;
+};
+
+/// Every problem with `options`, one line each, naming the option ("fallback: unknown backend
+/// 'la_lsn' (known: ...)"): unknown backends, a parallel fallback for a serial backend, backend
+/// parameters that do not configure their backend, values out of range. Empty when usable.
+std::vector<std::string> checkPlanningOptions(const PlanningOptions& options);
+
+/// `options.threads`, or the machine's cores (at least 1) for 0.
+int effectiveThreads(const PlanningOptions& options);
+
+}  // namespace fleet_planner

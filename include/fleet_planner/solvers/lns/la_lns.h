@@ -1,0 +1,73 @@
+#pragma once
+/// LA-LNS: large neighbourhood search that repairs collisions, for large agents.
+///   Li, Chen, Harabor, Stuckey, Koenig. "MAPF-LNS2: Fast Repairing for Multi-Agent Path
+///   Finding via Large Neighborhood Search." AAAI 2022.
+///
+/// Every agent first gets a path by prioritized planning in which earlier agents' paths are soft
+/// obstacles (soft_path_search.h): the plan is complete but may collide. Then, until no two
+/// agents collide or the deadline passes, a few agents (a neighbourhood) lose their paths and are
+/// replanned one by one, in a seeded random order, around everybody else as soft obstacles; the
+/// new paths are kept when the number of colliding agent pairs does not grow. Neighbourhoods come
+/// from the collision graph (a colliding agent and its partners, widened by a random walk), from
+/// the agents in the way of a colliding agent's ideal path, or at random among colliding agents,
+/// chosen adaptively by how much each has helped (adaptive LNS). When repairs stop lowering the
+/// number of colliding pairs, the neighbourhood doubles until one does; at the size of the
+/// subproblem every agent is replanned, colliding or not: a knot of a few pairs in a packed level
+/// may need all of its robots to move differently. A fourth kind of step replans a colliding
+/// agent and up to two of its partners together around everybody else, for the knots that
+/// one-by-one replanning cannot untie: one after the other, collision-free, with the ones not
+/// yet replanned at their starts, in a random order and in reverse (ordered_repair.h); where
+/// that fails, by LA-CBS (joint_repair.h); and where that fails too, once the neighbourhood
+/// has grown to the whole subproblem, by a joint search (joint_path_search.h).
+///
+/// Beyond the paper's backends. Serial: static footprints and the timed paths of other
+/// subproblems are hard obstacles. Incomplete: the only proofs it gives are a knot whose joint
+/// search exhausts its joint space, or a pair of a knot that cannot reach its targets even alone
+/// among the static obstacles (INFEASIBLE, naming the robots); any other unsolved subproblem is
+/// TIMEOUT. Same input and seed, same plan.
+#include "fleet_planner/solvers/solver.h"
+
+namespace fleet_planner {
+
+struct LaLnsOptions {
+  /// Agents replanned together in one repair step, at first.
+  int neighborhood_size = 8;
+  /// Repairs without a new lowest number of colliding pairs after which the neighbourhood
+  /// doubles (up to every agent of the subproblem).
+  int stall_repairs = 20;
+  /// Cost of one colliding step in the low level, in steps of path length.
+  int collision_cost = 16;
+  /// Expansions of one low-level search before it gives up.
+  long long max_expansions_per_search = 200'000;
+  /// Joint repair: agents replanned together, first by LA-CBS (its time, at most a quarter of
+  /// what is left, and its expansions), then, if it fails, the group is small enough and the
+  /// neighbourhood has grown to the whole subproblem, by a joint search (joint_path_search.h)
+  /// storing at most this many joint states (see JointSearchOptions::max_nodes for its cost).
+  int joint_size = 3;
+  long long joint_search_nodes = 50'000;
+  double joint_seconds = 0.5;
+  long long joint_max_expansions = 100'000;
+  /// Where the joint search finds nothing, each pair of the group is tried alone among the
+  /// static obstacles by LA-LaCAM, with this many expansions: a pair that cannot reach its
+  /// targets proves that the subproblem has no plan.
+  long long pair_proof_expansions = 2'000'000;
+  /// Before each repair, one local repair of a colliding agent (path_splice.h): a few steps of
+  /// its path around one of its collisions replanned collision-free, the rest kept (delayed if
+  /// need be).
+  bool splice = true;
+};
+
+class LaLns : public Solver {
+ public:
+  explicit LaLns(LaLnsOptions options = {}) : options_(options) {}
+  std::string name() const override { return "la_lns"; }
+  bool avoidsMovingObstacles() const override { return true; }
+  /// Options by name (backend_options.cpp): the fields of the options struct above.
+  void configure(const BackendOptionValues& values) override;
+  SolveResult solve(const Subproblem& problem) override;
+
+ private:
+  LaLnsOptions options_;
+};
+
+}  // namespace fleet_planner

@@ -1,0 +1,68 @@
+#pragma once
+/// The world as one subproblem sees it, shared by the backends: each agent's state graph
+/// restricted by the static footprints of other subproblems, the exact distance from every
+/// state to the agent's target in that restricted graph (the low-level heuristic, computed once
+/// per subproblem), and the reservation table of moving obstacles.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "fleet_planner/model/obstacle_index.h"
+#include "fleet_planner/solvers/search/distance_table.h"
+#include "fleet_planner/solvers/search/reservation_table.h"
+#include "fleet_planner/solvers/solver.h"
+
+namespace fleet_planner {
+
+class SearchSpace {
+ public:
+  /// Throws InvalidInput for a malformed subproblem (missing instance or graphs, a robot index
+  /// out of range or repeated). Unsolvable robots are reported by problem(), not thrown.
+  /// With a memory guard on the deadline, throws ResourceLimitError (max_memory_mb) if the
+  /// distance tables would not fit, before allocating them. The tables are built until the
+  /// subproblem's deadline: if it passes first, stopped() is true and the space is unusable.
+  explicit SearchSpace(const Subproblem& problem);
+
+  int numAgents() const { return static_cast<int>(robots_.size()); }
+  /// Instance index of agent a.
+  int robot(int a) const { return robots_[a]; }
+  const StateGraph& graph(int a) const { return graphs_->graph(robots_[a]); }
+  const FootprintCells& cells(int a) const { return graphs_->cells(robots_[a]); }
+  StateId start(int a) const { return starts_[a]; }
+  StateId target(int a) const { return targets_[a]; }
+  /// "robot '<id>'" for messages.
+  std::string label(int a) const;
+
+  /// Agent a may do `action` from s: the graph has the edge and it sweeps no blocked footprint.
+  bool allows(int a, StateId s, Action action) const {
+    const StateGraph& g = graph(a);
+    if (!g.allows(s, action)) return false;
+    if (!has_static_) return true;
+    const GridPose p = g.pose(s);
+    return !static_cells_->blocked(cells(a).swept(p.heading, action), {p.x, p.y});
+  }
+  /// Steps from s to agent a's target in the restricted graph; -1 if unreachable.
+  int distance(int a, StateId s) const { return distances_[a][s]; }
+  const ReservationTable& reservations() const { return reservations_; }
+
+  /// Empty if every agent has a valid start and target connected in its restricted graph;
+  /// otherwise why not, naming the first such robot.
+  const std::string& problem() const { return problem_; }
+  /// The deadline passed before every distance table was built (problem() is then only what
+  /// was found until then).
+  bool stopped() const { return stopped_; }
+
+ private:
+  const Instance* instance_;
+  const FleetGraphs* graphs_;
+  std::vector<int> robots_;
+  std::vector<StateId> starts_, targets_;
+  bool has_static_ = false;
+  std::unique_ptr<ObstacleIndex> static_cells_;
+  std::vector<DistanceTable> distances_;
+  ReservationTable reservations_;
+  std::string problem_;
+  bool stopped_ = false;
+};
+
+}  // namespace fleet_planner

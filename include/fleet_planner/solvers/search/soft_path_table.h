@@ -1,0 +1,99 @@
+#pragma once
+/// The current paths of a subproblem's agents as soft obstacles (LA-LNS, la_lns.h): which
+/// agents a candidate motion would collide with, found through a space-time index of buckets of
+/// cells, so that a query costs the agents nearby, not the whole fleet.
+///
+/// Step t is the motion from time t to t + 1; an agent sweeps the cells of its action during a
+/// step (its footprint when it waits) and, once its path has ended, stands at its last state
+/// for every later step. Two agents collide during step t when their sweeps share a cell: that
+/// covers the vertex conflicts at t and t + 1 and the transfer conflicts of the step, the model
+/// of agent_conflicts.h and of the validator.
+#include <cstdint>
+#include <unordered_map>
+#include <vector>
+
+#include "fleet_planner/solvers/search/agent_conflicts.h"
+#include "fleet_planner/solvers/search/search_space.h"
+
+namespace fleet_planner {
+
+class SoftPathTable {
+ public:
+  explicit SoftPathTable(const SearchSpace& space);
+
+  /// Puts agent a's path in the table (replacing none: a must not be in it). Not empty.
+  void insert(int a, const StatePath& path);
+  /// Takes agent a's path out (a must be in it).
+  void remove(int a);
+  bool contains(int a) const { return !paths_[a].empty(); }
+  const StatePath& path(int a) const { return paths_[a]; }
+
+  /// Agents in the table other than a that collide with a doing `action` from s during step t,
+  /// each once, appended to `out`.
+  void collisions(int a, StateId s, Action action, int t, std::vector<int>& out) const;
+  /// Agents in the table other than a that collide with a standing at s during some step t or
+  /// later, each once, appended to `out`.
+  void collisionsHolding(int a, StateId s, int t, std::vector<int>& out) const;
+  /// Agents in the table that collide with agent a's path in the table (or with `path`, when
+  /// given, as if it were a's), sorted.
+  std::vector<int> partners(int a) const { return partners(a, paths_[a]); }
+  std::vector<int> partners(int a, const StatePath& path) const;
+  /// The steps during which agent a doing `action` from s would collide with an agent in the
+  /// table (other than a), as (first, last) runs, unsorted and possibly overlapping, up to
+  /// lastMove(); and the first step from which it collides for good with an agent standing at
+  /// its end (kNever if none).
+  static constexpr int kNever = 1 << 30;
+  void unsafeRuns(int a, StateId s, Action action, std::vector<std::pair<int, int>>& runs,
+                  int& forever_from) const;
+  /// Last step during which some agent in the table moves (every path of length 1: -1).
+  int lastMove() const;
+
+ private:
+  struct Bucket {
+    int x0, y0, x1, y1;
+  };
+  Bucket bucketsOf(const CellSet& set, Cell origin) const;
+  std::uint64_t key(int t, int bucket) const {
+    return static_cast<std::uint64_t>(t) * buckets_ + bucket;
+  }
+  template <class F>
+  void forBuckets(const CellSet& set, Cell origin, F&& f) const;
+  // Calls f(cell index) for every map cell of `set` placed at `origin`.
+  template <class F>
+  void forCells(const CellSet& set, Cell origin, F&& f) const;
+  // Adds (on = true) or removes the entries of a's path.
+  void index(int a, bool on);
+  // a doing `action` from pose p collides with b doing `b_action` from pose q in the same step.
+  bool meets(int a, const GridPose& p, Action action, int b, const GridPose& q, Action b_action) const;
+  // a doing `action` from pose p during step t collides with b's motion during that step.
+  bool hits(int a, const GridPose& p, Action action, int b, int t) const;
+  // Starts a query: a new query_ stamp (all stamps cleared when the counter wraps).
+  void newQuery() const;
+  // True the first time agent b is met in the current query (query_).
+  bool firstVisit(int b) const;
+
+  const SearchSpace& space_;
+  int width_, height_, bx_, by_, buckets_;
+  std::vector<StatePath> paths_;
+  struct Motion {
+    int agent;
+    GridPose pose;  // where the agent is at the step's start
+    Action action;  // what it does during the step
+  };
+  std::unordered_map<std::uint64_t, std::vector<Motion>> moving_;  // (step, bucket) -> motions
+  std::vector<std::vector<int>> parked_;                        // bucket -> agents at their end
+  // Per map cell, the steps during which an agent sweeps it (waits and moves alike), one span
+  // per stretch of consecutive steps; last == kNever: the agent stands there at its end. The
+  // interval queries (unsafeRuns) read these: the cells of a motion, not every motion nearby.
+  struct Span {
+    int first, last;
+    int agent;
+  };
+  std::vector<std::vector<Span>> cell_spans_;
+  mutable std::vector<std::vector<std::pair<int, int>>> agent_runs_;  // unsafeRuns' scratch
+  mutable std::vector<int> met_;                                     // its agents
+  mutable std::vector<std::uint32_t> stamp_;  // dedup of query results
+  mutable std::uint32_t query_ = 0;
+};
+
+}  // namespace fleet_planner

@@ -1,0 +1,55 @@
+// Proving a pair of robots infeasible; see infeasible_pairs.h.
+#include "fleet_planner/infeasibility/infeasible_pairs.h"
+
+#include "fleet_planner/infeasibility/pair_goal_search.h"
+#include "fleet_planner/solvers/lacam/la_lacam.h"
+
+namespace fleet_planner {
+
+namespace {
+
+// Joint configurations the backward search of a pair's goal may collect (about 40 bytes each).
+constexpr long long kBackwardConfigurations = 1'000'000;
+
+}  // namespace
+
+SolveResult searchPairAlone(const Subproblem& around, int a, int b, long long max_expansions, const Deadline& deadline) {
+  Subproblem pair;
+  pair.instance = around.instance;
+  pair.graphs = around.graphs;
+  pair.robots = {a, b};
+  pair.blocked = around.blocked;
+  pair.returning = around.returning;
+  pair.deadline = deadline;
+  pair.max_expansions = max_expansions;
+  return LaLacam().solve(pair);
+}
+
+std::optional<std::string> findInfeasiblePair(const Instance& instance, const FleetGraphs& graphs,
+                                              const std::vector<std::pair<int, int>>& pairs,
+                                              long long max_expansions, const Deadline& deadline) {
+  for (const auto& [a, b] : pairs) {
+    if (deadline.expired()) return std::nullopt;
+    Subproblem alone;  // the map's obstacles only
+    alone.instance = &instance;
+    alone.graphs = &graphs;
+    const SolveResult r = searchPairAlone(alone, a, b, max_expansions, deadline);
+    std::string why = r.reason;
+    if (r.status != SolveStatus::Infeasible) {
+      if (r.success()) continue;
+      // Forwards from the start the space was too large; backwards from the goal it may not be.
+      const PairEnds ends_a{a, instance.robots[a].start, instance.robots[a].target};
+      const PairEnds ends_b{b, instance.robots[b].start, instance.robots[b].target};
+      const PairSearch back =
+          searchPairBackwards(graphs, ends_a, ends_b, kBackwardConfigurations, deadline);
+      if (back.reach != PairReach::Unreachable) continue;
+      why = "every configuration from which both can reach their targets explored, " +
+            std::to_string(back.configurations) + " of them: their starts are not one";
+    }
+    return "robots '" + instance.robots[a].id + "' and '" + instance.robots[b].id +
+           "' cannot both reach their targets, even alone on the map (" + why + ")";
+  }
+  return std::nullopt;
+}
+
+}  // namespace fleet_planner

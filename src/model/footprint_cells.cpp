@@ -1,0 +1,149 @@
+#include "fleet_planner/model/footprint_cells.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "fleet_planner/runtime/errors.h"
+#include "fleet_planner/model/geometry.h"
+
+namespace fleet_planner {
+
+namespace {
+
+using geometry::Vec2;
+using Polygon = std::vector<Vec2>;
+
+// Every cell offset in the square of half-size `r` (cells) around the origin satisfying `covers`.
+template <class Covers>
+CellSet cellsWhere(double r, Covers covers) {
+  const int n = static_cast<int>(std::ceil(r)) + 1;
+  std::vector<Cell> cells;
+  for (int dy = -n; dy <= n; ++dy) {
+    for (int dx = -n; dx <= n; ++dx) {
+      if (covers(Vec2(dx, dy))) cells.push_back({dx, dy});
+    }
+  }
+  return CellSet::fromCells(std::move(cells));
+}
+
+Polygon rotated(const Polygon& polygon, int heading) {
+  Polygon out;
+  out.reserve(polygon.size());
+  for (const Vec2& p : polygon) out.push_back(geometry::rotateQuarter(p, kQuarterTurns[heading]));
+  return out;
+}
+
+// The star hull about the origin: one triangle from the origin to each edge (degenerate skipped).
+std::vector<Polygon> starHull(const Polygon& polygon) {
+  std::vector<Polygon> triangles;
+  for (std::size_t i = 0; i < polygon.size(); ++i) {
+    const Vec2& a = polygon[i];
+    const Vec2& b = polygon[(i + 1) % polygon.size()];
+    if (std::abs(a.x() * b.y() - a.y() * b.x()) > geometry::kEps) {
+      triangles.push_back({Vec2::Zero(), a, b});
+    }
+  }
+  return triangles;
+}
+
+bool anyTriangleCovers(const std::vector<Polygon>& triangles, const Vec2& c, double half) {
+  for (const auto& t : triangles) {
+    if (geometry::squareOverlapsPolygon(c, t, half)) return true;
+  }
+  return false;
+}
+
+// Cells swept by the polygon (at `heading`) turning 90 degrees, counter-clockwise if ccw.
+// The sweep of a star-shaped set is both end poses plus, for every vertex, the sector its
+// radius sweeps: the farthest point of any ray lies on an edge whose maximum is at a vertex.
+// A cell counts when the sweep reaches more than `tolerance` into it (the cell shrunk by
+// `tolerance` on every side); the caller adds both end poses exactly.
+CellSet rotationSweep(const Polygon& outline, int heading, bool ccw, double reach, double tolerance) {
+  const double half = 0.5 - tolerance;
+  const Polygon start = rotated(outline, heading);
+  const int end_heading = ccw ? kRotateCcw[heading] : kRotateCw[heading];
+  const auto hull_start = starHull(start);
+  const auto hull_end = starHull(rotated(outline, end_heading));
+  struct Sector {
+    double r, a0, a1;
+  };
+  std::vector<Sector> sectors;
+  for (const Vec2& v : start) {
+    const double r = v.norm();
+    if (r < geometry::kEps) continue;
+    const double a = std::atan2(v.y(), v.x());
+    sectors.push_back(ccw ? Sector{r, a, a + geometry::kPi / 2} : Sector{r, a - geometry::kPi / 2, a});
+  }
+  return cellsWhere(reach, [&](const Vec2& c) {
+    if (geometry::squareOverlapsPolygon(c, start, half)) return true;
+    if (anyTriangleCovers(hull_start, c, half) || anyTriangleCovers(hull_end, c, half)) return true;
+    for (const auto& s : sectors) {
+      if (geometry::squareOverlapsSector(c, s.r, s.a0, s.a1, half)) return true;
+    }
+    return false;
+  });
+}
+
+std::size_t hashCells(const CellSet& set, std::size_t seed) {
+  for (const auto& r : set.runs()) {
+    for (int v : {r.dy, r.x0, r.x1}) {
+      seed ^= std::hash<int>()(v) + 0x9e3779b97f4a7c15ULL + (seed << 6) + (seed >> 2);
+    }
+  }
+  return seed;
+}
+
+}  // namespace
+
+FootprintCells::FootprintCells(const Footprint& footprint) : footprint_(footprint) {
+  const std::string problem = footprintProblem(footprint);
+  if (!problem.empty()) throw InvalidInput("invalid footprint (" + footprint.describe() + "): " + problem);
+
+  const double reach = footprint.circumscribedRadius();
+  const Polygon outline = footprint.outline();
+  for (int h = 0; h < kHeadings; ++h) {
+    if (footprint.kind == Footprint::Kind::Circle) {
+      body_[h] = cellsWhere(reach, [&](const Vec2& c) { return geometry::squareOverlapsDisc(c, reach); });
+    } else {
+      const Polygon poly = rotated(outline, h);
+      body_[h] = cellsWhere(reach, [&](const Vec2& c) { return geometry::squareOverlapsPolygon(c, poly); });
+    }
+  }
+  for (int h = 0; h < kHeadings; ++h) {
+    const Cell step = kHeadingStep[h];
+    auto& sw = swept_[h];
+    sw[static_cast<int>(Action::Wait)] = body_[h];
+    sw[static_cast<int>(Action::Forward)] = body_[h].unionWith(body_[h], step);
+    sw[static_cast<int>(Action::Backward)] = body_[h].unionWith(body_[h], {-step.x, -step.y});
+    for (bool ccw : {true, false}) {
+      const Action a = ccw ? Action::RotateCcw : Action::RotateCw;
+      const int end = ccw ? kRotateCcw[h] : kRotateCw[h];
+      CellSet cells = footprint.kind == Footprint::Kind::Circle
+                          ? body_[h]
+                          : rotationSweep(outline, h, ccw, reach, footprint.sweep_tolerance);
+      // Both end poses are part of every rotation, whatever rounding did above.
+      sw[static_cast<int>(a)] = cells.unionWith(body_[h], {0, 0}).unionWith(body_[end], {0, 0});
+    }
+  }
+  hash_ = 0;
+  for (int h = 0; h < kHeadings; ++h) {
+    for (int a = 0; a < kActions; ++a) {
+      max_norm_sq_ = std::max(max_norm_sq_, swept_[h][a].maxNormSq());
+      hash_ = hashCells(swept_[h][a], hash_);
+    }
+    hash_ = hashCells(body_[h], hash_);
+  }
+}
+
+bool FootprintCells::sameCells(const FootprintCells& other) const {
+  if (hash_ != other.hash_) return false;
+  for (int h = 0; h < kHeadings; ++h) {
+    if (body_[h] != other.body_[h]) return false;
+    for (int a = 0; a < kActions; ++a) {
+      if (swept_[h][a] != other.swept_[h][a]) return false;
+    }
+  }
+  return true;
+}
+
+}  // namespace fleet_planner

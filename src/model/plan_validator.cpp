@@ -1,0 +1,208 @@
+#include "fleet_planner/model/plan_validator.h"
+
+#include <algorithm>
+#include <memory>
+#include <sstream>
+#include <utility>
+#include <vector>
+
+#include "fleet_planner/model/collision.h"
+#include "fleet_planner/model/footprint_cells.h"
+
+namespace fleet_planner {
+
+namespace {
+
+// Every cell of `set` at `origin` is on the map and free.
+bool cellsFree(const GridMap& map, const CellSet& set, const GridPose& origin) {
+  for (const auto& run : set.runs()) {
+    for (int x = run.x0; x <= run.x1; ++x) {
+      if (map.blocked(origin.x + x, origin.y + run.dy)) return false;
+    }
+  }
+  return true;
+}
+
+// The bounding box of `set` placed at `origin`, inclusive (x0 > x1 for an empty set).
+struct Box {
+  int x0, y0, x1, y1;
+};
+
+Box boxOf(const CellSet& set, const GridPose& origin) {
+  if (set.empty()) return {1, 1, 0, 0};
+  return {origin.x + set.minX(), origin.y + set.minY(), origin.x + set.maxX(), origin.y + set.maxY()};
+}
+
+// The pairs (i < j) whose boxes share a cell, sorted: the only pairs whose sets can overlap
+// (sweep and prune along x). A broad phase only: every candidate is still checked cell by cell.
+std::vector<std::pair<int, int>> overlappingBoxes(const std::vector<Box>& boxes) {
+  std::vector<int> order(boxes.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = static_cast<int>(i);
+  std::sort(order.begin(), order.end(), [&](int a, int b) { return boxes[a].x0 < boxes[b].x0; });
+  std::vector<std::pair<int, int>> pairs;
+  std::vector<int> active;
+  for (int k : order) {
+    const Box& b = boxes[k];
+    if (b.x0 > b.x1) continue;
+    active.erase(std::remove_if(active.begin(), active.end(), [&](int m) { return boxes[m].x1 < b.x0; }),
+                 active.end());
+    for (int m : active) {
+      if (boxes[m].y0 <= b.y1 && b.y0 <= boxes[m].y1) pairs.emplace_back(std::min(k, m), std::max(k, m));
+    }
+    active.push_back(k);
+  }
+  std::sort(pairs.begin(), pairs.end());
+  return pairs;
+}
+
+class Checker {
+ public:
+  Checker(const GridMap& map, const Instance& instance, const Plan& plan, const ActionModel& model)
+      : map_(map), instance_(instance), plan_(plan), model_(model) {}
+
+  Violation run() {
+    const int n = static_cast<int>(instance_.robots.size());
+    if (static_cast<int>(plan_.paths.size()) != n) {
+      return fail(Violation::Kind::WrongPathCount, -1, -1, -1,
+                  "plan has " + std::to_string(plan_.paths.size()) + " paths for " +
+                      std::to_string(n) + " robots");
+    }
+    for (int i = 0; i < n; ++i) {
+      const Robot& r = instance_.robots[i];
+      const Path& p = plan_.paths[i];
+      if (p.empty()) return fail(Violation::Kind::EmptyPath, i, -1, 0, "path is empty");
+      if (p.front() != r.start)
+        return fail(Violation::Kind::WrongStart, i, -1, 0,
+                    "path starts at " + toString(p.front()) + ", start is " + toString(r.start));
+      if (p.back() != r.target)
+        return fail(Violation::Kind::WrongTarget, i, -1, static_cast<int>(p.size()) - 1,
+                    "path ends at " + toString(p.back()) + ", target is " + toString(r.target));
+      for (const GridPose& s : p) {
+        if (!validHeading(s.heading))
+          return fail(Violation::Kind::IllegalAction, i, -1, -1, "heading of " + toString(s) + " is not 0..3");
+      }
+    }
+    cells_.reserve(n);
+    for (const Robot& r : instance_.robots) cells_.push_back(std::make_unique<FootprintCells>(r.footprint));
+
+    int horizon = 0;
+    for (const Path& p : plan_.paths) horizon = std::max(horizon, static_cast<int>(p.size()) - 1);
+
+    for (int i = 0; i < n; ++i) {
+      if (!cellsFree(map_, cells_[i]->body(plan_.paths[i][0].heading), plan_.paths[i][0]))
+        return fail(Violation::Kind::StateInObstacle, i, -1, 0,
+                    "footprint at " + toString(plan_.paths[i][0]) + " covers a blocked or off-map cell");
+    }
+    if (Violation v = vertexConflicts(0); v.kind != Violation::Kind::None) return v;
+
+    std::vector<Action> actions(n);
+    for (int t = 0; t < horizon; ++t) {
+      for (int i = 0; i < n; ++i) {
+        const GridPose& from = stateAt(plan_.paths[i], t);
+        const GridPose& to = stateAt(plan_.paths[i], t + 1);
+        const auto action = actionBetween(from, to, model_);
+        if (!action)
+          return fail(Violation::Kind::IllegalAction, i, -1, t,
+                      "no action leads from " + toString(from) + " to " + toString(to));
+        actions[i] = *action;
+        if (!cellsFree(map_, cells_[i]->body(to.heading), to))
+          return fail(Violation::Kind::StateInObstacle, i, -1, t + 1,
+                      "footprint at " + toString(to) + " covers a blocked or off-map cell");
+        if (!cellsFree(map_, cells_[i]->swept(from.heading, *action), from))
+          return fail(Violation::Kind::SweepInObstacle, i, -1, t,
+                      std::string(actionName(*action)) + " from " + toString(from) +
+                          " sweeps a blocked or off-map cell");
+      }
+      if (Violation v = vertexConflicts(t + 1); v.kind != Violation::Kind::None) return v;
+      std::vector<Box> boxes(n);
+      for (int i = 0; i < n; ++i) {
+        const GridPose& a = stateAt(plan_.paths[i], t);
+        boxes[i] = boxOf(cells_[i]->swept(a.heading, actions[i]), a);
+      }
+      for (const auto& [i, j] : overlappingBoxes(boxes)) {
+        const GridPose& a = stateAt(plan_.paths[i], t);
+        const GridPose& b = stateAt(plan_.paths[j], t);
+        if (sweepsOverlap(*cells_[i], a, actions[i], *cells_[j], b, actions[j]))
+          return fail(Violation::Kind::TransferConflict, i, j, t,
+                      std::string(actionName(actions[i])) + " from " + toString(a) + " and " +
+                          actionName(actions[j]) + " from " + toString(b) + " sweep a common cell");
+      }
+    }
+    return {};
+  }
+
+ private:
+  Violation vertexConflicts(int t) {
+    const int n = static_cast<int>(cells_.size());
+    std::vector<Box> boxes(n);
+    for (int i = 0; i < n; ++i) {
+      const GridPose& a = stateAt(plan_.paths[i], t);
+      boxes[i] = boxOf(cells_[i]->body(a.heading), a);
+    }
+    for (const auto& [i, j] : overlappingBoxes(boxes)) {
+      const GridPose& a = stateAt(plan_.paths[i], t);
+      const GridPose& b = stateAt(plan_.paths[j], t);
+      if (footprintsOverlap(*cells_[i], a, *cells_[j], b))
+        return fail(Violation::Kind::VertexConflict, i, j, t,
+                    "footprints at " + toString(a) + " and " + toString(b) + " overlap");
+    }
+    return {};
+  }
+
+  Violation fail(Violation::Kind kind, int robot, int other, int time, const std::string& what) const {
+    Violation v;
+    v.kind = kind;
+    v.robot = robot;
+    v.other = other;
+    v.time = time;
+    std::ostringstream out;
+    out << violationName(kind);
+    if (robot >= 0) out << ": robot '" << instance_.robots[robot].id << "'";
+    if (other >= 0) out << " and robot '" << instance_.robots[other].id << "'";
+    if (time >= 0) out << " at t=" << time;
+    out << ": " << what;
+    v.message = out.str();
+    return v;
+  }
+
+  const GridMap& map_;
+  const Instance& instance_;
+  const Plan& plan_;
+  const ActionModel& model_;
+  std::vector<std::unique_ptr<FootprintCells>> cells_;
+};
+
+}  // namespace
+
+ValidationResult validatePlan(const GridMap& map, const Instance& instance, const Plan& plan,
+                              const ActionModel& model) {
+  return {Checker(map, instance, plan, model).run()};
+}
+
+const char* violationName(Violation::Kind kind) {
+  switch (kind) {
+    case Violation::Kind::None:
+      return "valid";
+    case Violation::Kind::WrongPathCount:
+      return "wrong path count";
+    case Violation::Kind::EmptyPath:
+      return "empty path";
+    case Violation::Kind::WrongStart:
+      return "wrong start";
+    case Violation::Kind::WrongTarget:
+      return "wrong target";
+    case Violation::Kind::StateInObstacle:
+      return "state in obstacle";
+    case Violation::Kind::IllegalAction:
+      return "illegal action";
+    case Violation::Kind::SweepInObstacle:
+      return "sweep in obstacle";
+    case Violation::Kind::VertexConflict:
+      return "vertex conflict";
+    case Violation::Kind::TransferConflict:
+      return "transfer conflict";
+  }
+  return "?";
+}
+
+}  // namespace fleet_planner

@@ -1,0 +1,38 @@
+#include "fleet_planner/model/state_graph.h"
+
+namespace fleet_planner {
+
+StateGraph::StateGraph(const GridMap& map, const ObstacleIndex& obstacles,
+                       std::shared_ptr<const FootprintCells> cells, ActionModel model)
+    : width_(map.width()), height_(map.height()), cells_(std::move(cells)), model_(model) {
+  flags_.assign(static_cast<std::size_t>(map.numCells()) * kHeadings, 0);
+  const FootprintCells& fc = *cells_;
+  for (int y = 0; y < height_; ++y) {
+    for (int x = 0; x < width_; ++x) {
+      for (int h = 0; h < kHeadings; ++h) {
+        if (!obstacles.blocked(fc.body(h), {x, y})) flags_[id({x, y, h})] = 1;
+      }
+    }
+  }
+  for (StateId s = 0; s < stateIdCount(); ++s) {
+    if (!(flags_[s] & 1u)) continue;
+    ++num_valid_;
+    const GridPose p = pose(s);
+    const Cell step = kHeadingStep[p.heading];
+    // A move sweeps the two footprints only, so it is free when both states are valid.
+    if (valid(id({p.x + step.x, p.y + step.y, p.heading}))) {
+      flags_[s] |= 1u << static_cast<int>(Action::Forward);
+    }
+    if (model_.allow_backward && valid(id({p.x - step.x, p.y - step.y, p.heading}))) {
+      flags_[s] |= 1u << static_cast<int>(Action::Backward);
+    }
+    for (Action a : {Action::RotateCcw, Action::RotateCw}) {
+      if (valid(next(s, a)) && !obstacles.blocked(fc.swept(p.heading, a), {p.x, p.y})) {
+        flags_[s] |= 1u << static_cast<int>(a);
+      }
+    }
+    for (int a = 1; a < kActions; ++a) num_edges_ += (flags_[s] >> a) & 1u;
+  }
+}
+
+}  // namespace fleet_planner

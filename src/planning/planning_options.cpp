@@ -1,0 +1,41 @@
+// Checks of the planning options; see planning_options.h.
+#include "fleet_planner/planning/planning_options.h"
+
+#include <algorithm>
+#include <thread>
+
+#include "fleet_planner/solvers/registry.h"
+
+namespace fleet_planner {
+
+std::vector<std::string> checkPlanningOptions(const PlanningOptions& o) {
+  std::vector<std::string> problems;
+  auto solver = [&](const char* option, const std::string& name) -> std::unique_ptr<Solver> {
+    try {
+      return makeSolver(name);
+    } catch (const std::exception& e) {
+      problems.push_back(std::string(option) + ": " + e.what());
+      return nullptr;
+    }
+  };
+  const auto backend = solver("backend", o.backend);
+  if (!o.fallback.empty()) {
+    const auto fallback = solver("fallback", o.fallback);
+    if (backend && fallback && backend->avoidsMovingObstacles() && !fallback->avoidsMovingObstacles()) {
+      problems.push_back("fallback: backend '" + o.fallback + "' cannot plan around moving obstacles, which backend '" +
+                         o.backend + "' hands on (choose a serial fallback such as la_lns, or none)");
+    }
+  }
+  for (const std::string& p : checkBackendParameters(o.backend_parameters)) problems.push_back("backend_parameters: " + p);
+  if (o.last_step < 1 || o.last_step > 4) problems.push_back("steps: must be 1..4 (got " + std::to_string(o.last_step) + ")");
+  if (o.threads < 0) problems.push_back("threads: must be >= 0, 0 for the machine's cores (got " + std::to_string(o.threads) + ")");
+  if (!(o.time_limit >= 0)) problems.push_back("time_limit: must be >= 0 seconds");
+  return problems;
+}
+
+int effectiveThreads(const PlanningOptions& options) {
+  if (options.threads > 0) return options.threads;
+  return static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+}
+
+}  // namespace fleet_planner

@@ -1,0 +1,192 @@
+// LA-LNS; see la_lns.h for the reference.
+#include "fleet_planner/solvers/lns/la_lns.h"
+
+#include <algorithm>
+#include <numeric>
+
+#include "fleet_planner/solvers/registry.h"
+#include "fleet_planner/solvers/search/safe_interval_search.h"
+#include "fleet_planner/solvers/search/soft_path_search.h"
+#include "fleet_planner/solvers/search/solve_common.h"
+#include "fleet_planner/solvers/search/space_time_astar.h"
+#include "lns_search.h"
+
+namespace fleet_planner {
+
+namespace {
+
+const bool kRegistered = registerSolver("la_lns", [] { return std::make_unique<LaLns>(); });
+
+}  // namespace
+
+LnsSearch::LnsSearch(const SearchSpace& space, const Subproblem& problem, const LaLnsOptions& options,
+          SolveStats& stats)
+    : space_(space),
+      problem_(problem),
+      options_(options),
+      stats_(stats),
+      n_(space.numAgents()),
+      table_(space),
+      rng_(problem.seed),
+      partners_(n_),
+      ideal_(n_),
+      ideal_absent_(n_, false),
+      escalation_(n_, 1),
+      growth_(options.neighborhood_size, options.stall_repairs, n_) {
+  weights_.fill(1.0);
+}
+
+SolveResult LnsSearch::run() {
+  std::vector<int> order(n_);
+  std::iota(order.begin(), order.end(), 0);
+  // Longest first: the agents with most to do get the freest space.
+  std::stable_sort(order.begin(), order.end(), [&](int x, int y) {
+    return space_.distance(x, space_.start(x)) > space_.distance(y, space_.start(y));
+  });
+  for (int a : order) {
+    StatePath path;
+    if (std::optional<SolveResult> stop = initialPath(a, path)) return *stop;
+    table_.insert(a, path);
+    ++planned_;
+  }
+  for (int a = 0; a < n_; ++a) partners_[a] = table_.partners(a);
+  while (true) {
+    if (collidingPairs() == 0) {
+      // The table's answer, checked by the backends' own conflict code before it is returned.
+      std::vector<StatePath> paths(n_);
+      for (int a = 0; a < n_; ++a) paths[a] = table_.path(a);
+      const std::optional<AgentConflict> c = firstConflict(space_, paths);
+      if (!c) return success(paths);
+      link(c->a, c->b);
+    }
+    if (std::optional<SolveResult> stop = outOfBudget()) return *stop;
+    repair();
+    if (proof_) {
+      SolveResult r = failedResult(SolveStatus::Infeasible, *proof_);
+      r.culprits = proof_culprits_;
+      return r;
+    }
+  }
+}
+
+std::optional<SolveResult> LnsSearch::outOfBudget() const {
+  if (problem_.deadline.cancelled()) return failedResult(SolveStatus::Cancelled, "cancelled");
+  if (problem_.deadline.expired()) return timeout("time limit reached");
+  if (problem_.max_expansions >= 0 && stats_.low_level_expansions > problem_.max_expansions)
+    return timeout("expansion budget of " + std::to_string(problem_.max_expansions) + " used up");
+  return std::nullopt;
+}
+
+SolveResult LnsSearch::timeout(const std::string& why) const {
+  if (planned_ < n_) {
+    return failedResult(SolveStatus::Timeout, why + " during the first plan (" +
+                                                  std::to_string(planned_) + " of " +
+                                                  std::to_string(n_) + " robots planned)");
+  }
+  SolveResult r = failedResult(SolveStatus::Timeout, why + " with " + std::to_string(collidingPairs()) +
+                                                         " colliding pairs of robots left" + somePairs());
+  for (int a = 0; a < n_; ++a) {
+    for (int b : partners_[a]) {
+      if (b > a) r.culprits.insert(r.culprits.end(), {space_.robot(a), space_.robot(b)});
+    }
+  }
+  return r;
+}
+
+// " (a & b, c & d, ...)": the first few colliding pairs, to say where the plan is stuck.
+std::string LnsSearch::somePairs() const {
+  std::string out;
+  int shown = 0;
+  for (int a = 0; a < n_ && shown < 3; ++a) {
+    for (int b : partners_[a]) {
+      if (b <= a || shown == 3) continue;
+      out += (shown++ == 0 ? " (" : ", ") + space_.label(a) + " & " + space_.label(b);
+    }
+  }
+  if (shown == 0) return out;
+  return out + (collidingPairs() > shown ? ", ...)" : ")");
+}
+
+// A path for a, around the agents planned so far as soft obstacles; if that search gives up,
+// its shortest path in the static world and the other subproblems' timed paths.
+std::optional<SolveResult> LnsSearch::initialPath(int a, StatePath& path) {
+  SoftSearchResult r = search(a);
+  if (r.outcome == SoftSearchResult::Outcome::Found) {
+    path = std::move(r.path);
+    return std::nullopt;
+  }
+  if (const std::optional<SolveResult> stop = outOfBudget()) return stop;
+  const StatePath& ideal = idealPath(a);
+  if (ideal.empty()) {
+    if (const std::optional<SolveResult> stop = outOfBudget()) return stop;
+    if (!ideal_absent_[a])
+      return timeout(space_.label(a) + "'s first path search ran out of nodes");
+    return failedResult(
+        SolveStatus::Infeasible,
+        space_.label(a) + " cannot reach its target around the other subproblems' robots");
+  }
+  path = ideal;
+  return std::nullopt;
+}
+
+// An agent whose new path still collides gets a higher collision cost next time (doubling up
+// to 64 times the base), so that a wait or a detour that a small cost would not pay for is
+// found in the end; a collision-free path resets it.
+SoftSearchResult LnsSearch::search(int a) {
+  // A collision-free path first (safe intervals: long waits are cheap there), if there is one.
+  const SafeIntervalResult free = safeIntervalSearch(space_, a, table_, problem_.deadline,
+                                                     options_.max_expansions_per_search);
+  stats_.low_level_expansions += free.expansions;
+  if (free.outcome == SafeIntervalResult::Outcome::Found) {
+    escalation_[a] = 1;
+    SoftSearchResult r;
+    r.outcome = SoftSearchResult::Outcome::Found;
+    r.path = free.path;
+    return r;
+  }
+  if (free.outcome == SafeIntervalResult::Outcome::Expired) {
+    SoftSearchResult r;
+    r.outcome = SoftSearchResult::Outcome::Expired;
+    return r;
+  }
+  SoftSearchOptions o;
+  o.collision_cost = options_.collision_cost * escalation_[a];
+  o.max_expansions = options_.max_expansions_per_search;
+  SoftSearchResult r = softPathSearch(space_, a, table_, problem_.deadline, o);
+  stats_.low_level_expansions += r.expansions;
+  if (r.outcome == SoftSearchResult::Outcome::Found) {
+    escalation_[a] = r.collisions == 0 ? 1 : std::min(escalation_[a] * 2, 64);
+  } else if (r.outcome == SoftSearchResult::Outcome::NodeLimit) {
+    escalation_[a] = std::max(escalation_[a] / 2, 1);
+  }
+  return r;
+}
+
+// Colliding pairs with at least one agent of `group`, given each agent's partners.
+int LnsSearch::pairsTouching(const std::vector<int>& group,
+                         const std::vector<std::vector<int>>& partners,
+                         const std::vector<bool>& in) {
+  int count = 0;
+  for (int a : group) {
+    for (int b : partners[a]) count += (!in[b] || a < b) ? 1 : 0;
+  }
+  return count;
+}
+
+SolveResult LnsSearch::success(const std::vector<StatePath>& paths) const {
+  SolveResult r;
+  r.status = SolveStatus::Success;
+  r.paths = toPosePaths(space_, paths);
+  return r;
+}
+
+SolveResult LaLns::solve(const Subproblem& problem) {
+  (void)kRegistered;
+  return solveWith(problem, /*moving_allowed=*/true,
+                   [&](const SearchSpace& space, SolveStats& stats) {
+                     LnsSearch search(space, problem, options_, stats);
+                     return search.run();
+                   });
+}
+
+}  // namespace fleet_planner

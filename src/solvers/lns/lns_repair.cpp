@@ -1,0 +1,192 @@
+// LA-LNS: replanning a neighbourhood; see lns_search.h.
+#include <algorithm>
+
+#include "fleet_planner/infeasibility/infeasible_pairs.h"
+#include "fleet_planner/solvers/lns/joint_repair.h"
+#include "fleet_planner/solvers/lns/ordered_repair.h"
+#include "fleet_planner/solvers/lns/path_splice.h"
+#include "fleet_planner/solvers/search/joint_path_search.h"
+#include "lns_search.h"
+
+namespace fleet_planner {
+
+// Replans the group robot by robot (each around all others); false if a search gave up.
+bool LnsSearch::planOneByOne(const std::vector<int>& group) {
+  for (int a : group) {
+    SoftSearchResult r = search(a);
+    if (r.outcome != SoftSearchResult::Outcome::Found) return false;
+    table_.insert(a, r.path);
+  }
+  return true;
+}
+
+// Replans the group jointly around all others' paths: first one after the other, in the
+// group's order and then in reverse, with the members not yet replanned at their starts
+// (ordered_repair.h: cheap, and collision-free if it works); then by LA-CBS within a small
+// share of the time left (others hard), and if that finds nothing, for a small group and once the
+// neighbourhood has grown to the whole subproblem, by a joint search (joint_path_search.h;
+// others soft); false if neither found a plan. A joint search that exhausts the group's joint
+// space proves that the subproblem has no plan (proof_). The joint search waits for the deep
+// stall because it costs time the repair needs: run at every joint step, its budget spent
+// 4-5 s of the 7 s that LA-LNS had for a 12-robot level of maze-128-128-10 K=40, which it
+// otherwise solves in that time.
+bool LnsSearch::planTogether(const std::vector<int>& group) {
+  for (const std::vector<int>& order : {group, std::vector<int>(group.rbegin(), group.rend())}) {
+    const std::optional<std::vector<StatePath>> paths =
+        orderedRepair(space_, table_, order, problem_.deadline,
+                      options_.max_expansions_per_search, stats_.low_level_expansions);
+    if (!paths) continue;
+    for (std::size_t k = 0; k < order.size(); ++k) table_.insert(order[k], (*paths)[k]);
+    return true;
+  }
+  const double seconds = std::min(options_.joint_seconds, problem_.deadline.remaining() / 4);
+  const std::vector<StatePath> paths =
+      jointRepair(space_, problem_, table_, group, seconds, options_.joint_max_expansions,
+                  rng_.next(), stats_.low_level_expansions);
+  for (std::size_t k = 0; k < paths.size(); ++k) table_.insert(group[k], paths[k]);
+  if (!paths.empty()) return true;
+  if (static_cast<int>(group.size()) > kMaxJointGroup || size_ < n_) return false;
+  JointSearchOptions o;
+  o.collision_cost = options_.collision_cost;
+  o.max_nodes = options_.joint_search_nodes;
+  const JointSearchResult r = jointPathSearch(space_, group, table_, problem_.deadline, o);
+  stats_.low_level_expansions += r.expansions;
+  if (r.outcome == JointSearchResult::Outcome::Found) {
+    for (std::size_t k = 0; k < group.size(); ++k) table_.insert(group[k], r.paths[k]);
+    return true;
+  }
+  if (r.outcome == JointSearchResult::Outcome::NoPath) {
+    std::vector<int> sorted = group;
+    std::sort(sorted.begin(), sorted.end());
+    std::string names;
+    for (std::size_t k = 0; k < sorted.size(); ++k)
+      names += (k == 0 ? "" : k + 1 == sorted.size() ? " and " : ", ") + space_.label(sorted[k]);
+    proof_culprits_.clear();
+    for (int a : sorted) proof_culprits_.push_back(space_.robot(a));
+    proof_ = names + " cannot all reach their targets around the obstacles they must avoid " +
+             "(their joint search ran out of states)";
+    return false;
+  }
+  provePair(group);
+  return false;
+}
+
+// A pair of the knot that cannot reach its targets even alone among the static obstacles
+// proves that the subproblem has no plan (proof_): dropping robots and obstacles only makes a
+// problem easier. LA-LaCAM decides the pair (its search over configurations is complete); the
+// joint search above rarely exhausts its timed joint space, and the pair's configurations are
+// far fewer. Each pair is tried once.
+void LnsSearch::provePair(const std::vector<int>& group) {
+  for (std::size_t i = 0; i < group.size() && !proof_; ++i) {
+    for (std::size_t j = i + 1; j < group.size() && !proof_; ++j) {
+      const int a = std::min(group[i], group[j]), b = std::max(group[i], group[j]);
+      if (!pairs_tried_.insert({a, b}).second) continue;
+      // No moving obstacles, no other robot of this subproblem.
+      const SolveResult r = searchPairAlone(problem_, space_.robot(a), space_.robot(b), options_.pair_proof_expansions,
+                                            problem_.deadline.within(problem_.deadline.remaining() / 8));
+      stats_.low_level_expansions += r.stats.low_level_expansions;
+      if (r.status != SolveStatus::Infeasible) continue;
+      proof_culprits_ = {space_.robot(a), space_.robot(b)};
+      proof_ = space_.label(a) + " and " + space_.label(b) +
+               " cannot both reach their targets around the obstacles they must avoid, even " +
+               "with no other robot moving (" + r.reason + ")";
+    }
+  }
+}
+
+// Replaces agent a's path in the table and its edges in the collision graph (`partners`:
+// the agents the new path collides with).
+void LnsSearch::replacePath(int a, const StatePath& path, const std::vector<int>& partners) {
+  table_.remove(a);
+  table_.insert(a, path);
+  for (int b : partners_[a])
+    partners_[b].erase(std::lower_bound(partners_[b].begin(), partners_[b].end(), a));
+  partners_[a].clear();
+  for (int b : partners) link(a, b);
+}
+
+void LnsSearch::link(int a, int b) {
+  auto add = [](std::vector<int>& v, int x) {
+    const auto it = std::lower_bound(v.begin(), v.end(), x);
+    if (it == v.end() || *it != x) v.insert(it, x);
+  };
+  add(partners_[a], b);
+  add(partners_[b], a);
+}
+
+int LnsSearch::collidingPairs() const {
+  std::size_t ends = 0;
+  for (const auto& p : partners_) ends += p.size();
+  return static_cast<int>(ends / 2);
+}
+
+// One local repair (path_splice.h) of a random collision of a random colliding agent, kept
+// unless the delay it gives the rest of the path meets more agents than before.
+void LnsSearch::splice() {
+  std::vector<int> colliding;
+  for (int a = 0; a < n_; ++a) {
+    if (!partners_[a].empty()) colliding.push_back(a);
+  }
+  if (colliding.empty()) return;
+  const int a = pick(colliding);
+  const std::vector<int> starts = collisionStarts(space_, a, table_);
+  if (starts.empty()) return;
+  const SpliceResult r = spliceAround(space_, a, table_, pick(starts), /*delays=*/true,
+                                      problem_.deadline, options_.max_expansions_per_search);
+  stats_.low_level_expansions += r.expansions;
+  if (!r.path) return;
+  const std::vector<int> partners = table_.partners(a, *r.path);
+  if (partners.size() <= partners_[a].size()) replacePath(a, *r.path, partners);
+}
+
+void LnsSearch::repair() {
+  ++stats_.high_level_nodes;
+  if (options_.splice) {
+    splice();
+    if (collidingPairs() == 0) return;
+  }
+  size_ = growth_.next(collidingPairs());
+  const Method method = chooseMethod();
+  std::vector<int> group = method == kJoint ? knot() : neighborhood(method);
+  std::vector<bool> in(n_, false);
+  for (int a : group) in[a] = true;
+  const int before = pairsTouching(group, partners_, in);
+
+  const std::vector<int> members = group;
+  std::vector<StatePath> old(group.size());
+  for (std::size_t i = 0; i < group.size(); ++i) {
+    old[i] = table_.path(group[i]);
+    table_.remove(group[i]);
+  }
+  shuffle(group);
+  const bool planned = method == kJoint ? planTogether(group) : planOneByOne(group);
+  std::vector<std::vector<int>> fresh(n_);
+  int after = before + 1;
+  if (planned) {
+    for (int a : group) fresh[a] = table_.partners(a);
+    after = pairsTouching(group, fresh, in);
+  }
+  weights_[method] = 0.1 * std::max(0, before - after) / static_cast<double>(group.size()) +
+                     0.9 * weights_[method];
+  weights_[method] = std::max(weights_[method], 0.01);
+  if (after <= before) {
+    for (int a : group) {
+      for (int b : partners_[a]) {
+        if (!in[b])
+          partners_[b].erase(std::lower_bound(partners_[b].begin(), partners_[b].end(), a));
+      }
+    }
+    for (int a : group) partners_[a].clear();
+    for (int a : group) {
+      for (int b : fresh[a]) link(a, b);
+    }
+    return;
+  }
+  // Not better: put the old paths back.
+  for (std::size_t i = 0; i < members.size(); ++i) {
+    if (table_.contains(members[i])) table_.remove(members[i]);
+    table_.insert(members[i], old[i]);
+  }
+}
+
+}  // namespace fleet_planner

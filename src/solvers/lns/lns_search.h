@@ -1,0 +1,129 @@
+#pragma once
+// The state of one LA-LNS solve (la_lns.h), private to LA-LNS. Its members are defined in three
+// files, one concern each:
+//   la_lns.cpp            the run: the first plan, the loop of repairs, the outcome;
+//   lns_neighborhoods.cpp which agents to replan: the adaptive choice of a method and its
+//                         neighbourhood (collision graph, ideal path, random, knot);
+//   lns_repair.cpp        replanning a neighbourhood: one by one, together (ordered, LA-CBS,
+//                         joint search), pair proofs, local splices, the collision graph.
+#include <array>
+#include <optional>
+#include <set>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "fleet_planner/runtime/random.h"
+#include "fleet_planner/solvers/lns/la_lns.h"
+#include "fleet_planner/solvers/lns/neighborhood_growth.h"
+#include "fleet_planner/solvers/search/search_space.h"
+#include "fleet_planner/solvers/search/soft_path_search.h"
+#include "fleet_planner/solvers/search/soft_path_table.h"
+
+namespace fleet_planner {
+
+/// How a repair chooses its neighbourhood (adaptive LNS: each method's weight grows with its help).
+enum Method { kCollisionGraph = 0, kIdealPath = 1, kRandom = 2, kJoint = 3, kMethods = 4 };
+
+class LnsSearch {
+ public:
+  LnsSearch(const SearchSpace& space, const Subproblem& problem, const LaLnsOptions& options,
+            SolveStats& stats);
+
+  SolveResult run();
+
+ private:
+  std::optional<SolveResult> outOfBudget() const;
+
+  SolveResult timeout(const std::string& why) const;
+
+  // " (a & b, c & d, ...)": the first few colliding pairs, to say where the plan is stuck.
+  std::string somePairs() const;
+
+  // A path for a, around the agents planned so far as soft obstacles; if that search gives up,
+  // its shortest path in the static world and the other subproblems' timed paths.
+  std::optional<SolveResult> initialPath(int a, StatePath& path);
+
+  // An agent whose new path still collides gets a higher collision cost next time (doubling up
+  // to 64 times the base), so that a wait or a detour that a small cost would not pay for is
+  // found in the end; a collision-free path resets it.
+  SoftSearchResult search(int a);
+
+  // Shortest path of a around hard obstacles only (empty if none or out of time); cached.
+  const StatePath& idealPath(int a);
+
+  int collidingPairs() const;
+
+  void link(int a, int b);
+
+  int pick(const std::vector<int>& from);
+
+  void shuffle(std::vector<int>& v);
+
+  Method chooseMethod();
+
+  std::vector<int> neighborhood(Method method);
+
+  // Colliding pairs with at least one agent of `group`, given each agent's partners.
+  static int pairsTouching(const std::vector<int>& group,
+                           const std::vector<std::vector<int>>& partners,
+                           const std::vector<bool>& in);
+
+  // Replans the group robot by robot (each around all others); false if a search gave up.
+  bool planOneByOne(const std::vector<int>& group);
+
+  // Replans the group jointly around all others' paths: first one after the other, in the
+  // group's order and then in reverse, with the members not yet replanned at their starts
+  // (ordered_repair.h: cheap, and collision-free if it works); then by LA-CBS within a small
+  // share of the time left (others hard), and if that finds nothing, for a small group and once the
+  // neighbourhood has grown to the whole subproblem, by a joint search (joint_path_search.h;
+  // others soft); false if neither found a plan. A joint search that exhausts the group's joint
+  // space proves that the subproblem has no plan (proof_). The joint search waits for the deep
+  // stall because it costs time the repair needs: run at every joint step, its budget spent
+  // 4-5 s of the 7 s that LA-LNS had for a 12-robot level of maze-128-128-10 K=40, which it
+  // otherwise solves in that time.
+  bool planTogether(const std::vector<int>& group);
+
+  // A pair of the knot that cannot reach its targets even alone among the static obstacles
+  // proves that the subproblem has no plan (proof_): dropping robots and obstacles only makes a
+  // problem easier. LA-LaCAM decides the pair (its search over configurations is complete); the
+  // joint search above rarely exhausts its timed joint space, and the pair's configurations are
+  // far fewer. Each pair is tried once.
+  void provePair(const std::vector<int>& group);
+
+  // A colliding agent and up to joint_size - 1 of its partners.
+  std::vector<int> knot();
+
+  // Replaces agent a's path in the table and its edges in the collision graph (`partners`:
+  // the agents the new path collides with).
+  void replacePath(int a, const StatePath& path, const std::vector<int>& partners);
+
+  // One local repair (path_splice.h) of a random collision of a random colliding agent, kept
+  // unless the delay it gives the rest of the path meets more agents than before.
+  void splice();
+
+  void repair();
+
+  SolveResult success(const std::vector<StatePath>& paths) const;
+
+  const SearchSpace& space_;
+  const Subproblem& problem_;
+  const LaLnsOptions& options_;
+  SolveStats& stats_;
+  const int n_;
+  SoftPathTable table_;
+  Rng rng_;
+  std::vector<std::vector<int>> partners_;  // sorted; symmetric: the collision graph
+  std::vector<StatePath> ideal_;
+  std::vector<bool> ideal_absent_;  // the search proved there is no such path
+  std::vector<int> escalation_;     // per agent: factor of the collision cost
+  int planned_ = 0;                 // robots with a path in the first plan so far
+  std::optional<std::string> proof_;  // why the subproblem has no plan, once a search proved it
+  std::vector<int> proof_culprits_;   // the robots of that proof (instance indices)
+  std::set<std::pair<int, int>> pairs_tried_;  // by provePair
+  NeighborhoodGrowth growth_;
+  int size_ = 0;                    // agents in this repair's neighbourhood (growth_)
+  std::array<double, kMethods> weights_;
+};
+
+}  // namespace fleet_planner

@@ -1,0 +1,138 @@
+#include "fleet_planner/solvers/search/agent_conflicts.h"
+
+#include <algorithm>
+
+#include "fleet_planner/model/collision.h"
+#include "fleet_planner/solvers/search/space_time_astar.h"
+
+namespace fleet_planner {
+
+namespace {
+
+int horizon(const std::vector<StatePath>& paths) {
+  int h = 0;
+  for (const auto& p : paths) h = std::max(h, static_cast<int>(p.size()) - 1);
+  return h;
+}
+
+struct Motion {
+  GridPose from, to;
+  Action action;
+};
+
+Motion motionAt(const SearchSpace& space, const std::vector<StatePath>& paths, int a, int t) {
+  const StateGraph& g = space.graph(a);
+  const StateId s = stateAt(paths[a], t), n = stateAt(paths[a], t + 1);
+  return {g.pose(s), g.pose(n), stepAction(g, s, n)};
+}
+
+// Calls f(conflict) for conflicts in step order; stops when f returns true.
+template <class F>
+void forEachConflict(const SearchSpace& space, const std::vector<StatePath>& paths, F&& f) {
+  const int n = static_cast<int>(paths.size());
+  const int T = horizon(paths);
+  std::vector<Motion> m(n);
+  for (int t = 0; t < std::max(T, 1); ++t) {
+    for (int i = 0; i < n; ++i) {
+      if (!paths[i].empty()) m[i] = motionAt(space, paths, i, t);
+    }
+    for (int i = 0; i < n; ++i) {
+      if (paths[i].empty()) continue;
+      for (int j = i + 1; j < n; ++j) {
+        if (paths[j].empty()) continue;
+        const FootprintCells &ci = space.cells(i), &cj = space.cells(j);
+        Cell c;
+        if (t == 0 && CellSet::commonCell(ci.body(m[i].from.heading), {m[i].from.x, m[i].from.y},
+                                          cj.body(m[j].from.heading), {m[j].from.x, m[j].from.y}, c)) {
+          if (f(AgentConflict{AgentConflict::Kind::Vertex, i, j, 0, c})) return;
+          continue;
+        }
+        if (T == 0) continue;
+        if (CellSet::commonCell(ci.body(m[i].to.heading), {m[i].to.x, m[i].to.y}, cj.body(m[j].to.heading),
+                                {m[j].to.x, m[j].to.y}, c)) {
+          if (f(AgentConflict{AgentConflict::Kind::Vertex, i, j, t + 1, c})) return;
+        } else if (CellSet::commonCell(ci.swept(m[i].from.heading, m[i].action), {m[i].from.x, m[i].from.y},
+                                       cj.swept(m[j].from.heading, m[j].action), {m[j].from.x, m[j].from.y}, c)) {
+          if (f(AgentConflict{AgentConflict::Kind::Transfer, i, j, t, c})) return;
+        }
+      }
+    }
+  }
+}
+
+}  // namespace
+
+std::optional<AgentConflict> firstConflict(const SearchSpace& space, const std::vector<StatePath>& paths) {
+  std::optional<AgentConflict> first;
+  forEachConflict(space, paths, [&](const AgentConflict& c) {
+    first = c;
+    return true;
+  });
+  return first;
+}
+
+std::vector<AgentConflict> earliestConflictPerPair(const SearchSpace& space, const std::vector<StatePath>& paths,
+                                                   int max_count) {
+  std::vector<AgentConflict> found;
+  if (max_count <= 0) return found;
+  const std::size_t n = paths.size();
+  std::vector<bool> seen(n * n, false);
+  forEachConflict(space, paths, [&](const AgentConflict& c) {
+    const std::size_t pair = static_cast<std::size_t>(c.a) * n + static_cast<std::size_t>(c.b);
+    if (seen[pair]) return false;
+    seen[pair] = true;
+    found.push_back(c);
+    return static_cast<int>(found.size()) >= max_count;
+  });
+  return found;
+}
+
+std::vector<std::pair<int, int>> conflictingPairs(const SearchSpace& space, const std::vector<StatePath>& paths) {
+  const std::size_t n = paths.size();
+  std::vector<bool> seen(n * n, false);
+  std::vector<std::pair<int, int>> pairs;
+  forEachConflict(space, paths, [&](const AgentConflict& c) {
+    const std::size_t pair = static_cast<std::size_t>(c.a) * n + static_cast<std::size_t>(c.b);
+    if (!seen[pair]) pairs.emplace_back(c.a, c.b);
+    seen[pair] = true;
+    return false;
+  });
+  std::sort(pairs.begin(), pairs.end());
+  return pairs;
+}
+
+int countConflicts(const SearchSpace& space, const std::vector<StatePath>& paths) {
+  int count = 0;
+  forEachConflict(space, paths, [&](const AgentConflict&) {
+    ++count;
+    return false;
+  });
+  return count;
+}
+
+ConflictAvoidanceTable::ConflictAvoidanceTable(const SearchSpace& space, const std::vector<StatePath>& paths,
+                                               int agent)
+    : space_(space), agent_(agent) {
+  const int T = horizon(paths);
+  steps_.resize(T + 1);
+  for (int t = 0; t <= T; ++t) {
+    for (int j = 0; j < static_cast<int>(paths.size()); ++j) {
+      if (j == agent || paths[j].empty()) continue;
+      const auto mj = motionAt(space, paths, j, t);
+      steps_[t].push_back({&space.cells(j).swept(mj.from.heading, mj.action), {mj.from.x, mj.from.y}});
+    }
+  }
+}
+
+int ConflictAvoidanceTable::conflicts(StateId s, Action action, int t) const {
+  if (steps_.empty()) return 0;
+  const GridPose p = space_.graph(agent_).pose(s);
+  const CellSet& mine = space_.cells(agent_).swept(p.heading, action);
+  int count = 0;
+  for (const Motion& m : steps_[std::min<std::size_t>(t, steps_.size() - 1)]) {
+    if (CellSet::overlap(mine, {p.x, p.y}, *m.cells, m.origin)) ++count;
+  }
+  return count;
+}
+
+}  // namespace fleet_planner

@@ -1,0 +1,20 @@
+#include "fleet_planner/solvers/search/distance_table.h"
+
+#include <algorithm>
+
+namespace fleet_planner {
+
+void DistanceTable::assign(const std::vector<std::int32_t>& steps) {
+  const std::int32_t longest = steps.empty() ? -1 : *std::max_element(steps.begin(), steps.end());
+  if (longest < kUnreachable) {
+    std::vector<std::int32_t>().swap(wide_);
+    narrow_.resize(steps.size());
+    for (std::size_t s = 0; s < steps.size(); ++s)
+      narrow_[s] = steps[s] < 0 ? kUnreachable : static_cast<std::uint16_t>(steps[s]);
+  } else {
+    std::vector<std::uint16_t>().swap(narrow_);
+    wide_ = steps;
+  }
+}
+
+}  // namespace fleet_planner

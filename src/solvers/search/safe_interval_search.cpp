@@ -1,0 +1,228 @@
+#include "fleet_planner/solvers/search/safe_interval_search.h"
+
+#include <algorithm>
+#include <cstdlib>
+#include <queue>
+#include <unordered_map>
+
+#include "node_table.h"
+
+namespace fleet_planner {
+
+namespace {
+
+constexpr int kNever = SoftPathTable::kNever;
+
+// Steps during which a motion collides: sorted, disjoint, non-adjacent intervals.
+struct Unsafe {
+  std::vector<std::pair<int, int>> runs;  // inclusive; second == kNever: from first on
+};
+
+struct Interval {
+  int first, last;  // steps during which waiting is safe, inclusive; last == kNever: for good
+};
+
+struct Node {
+  StateId s;
+  int interval;
+  int g;  // arrival time
+  int f;
+  int parent;
+};
+
+class Sipp {
+ public:
+  Sipp(const SearchSpace& space, int a, const SoftPathTable& others)
+      : space_(space), a_(a), others_(others), graph_(space.graph(a)) {}
+
+  // Steps during which doing `action` from s collides with another agent or a moving obstacle.
+  const Unsafe& unsafe(StateId s, Action action) {
+    const std::uint64_t k = static_cast<std::uint64_t>(s) * kActions + static_cast<int>(action);
+    auto it = unsafe_.find(k);
+    if (it != unsafe_.end()) return it->second;
+    int forever = kNever;
+    others_.unsafeRuns(a_, s, action, runs_, forever);
+    if (forever != kNever) runs_.emplace_back(forever, kNever);
+    const ReservationTable& reservations = space_.reservations();
+    if (!reservations.empty()) {
+      const GridPose p = graph_.pose(s);
+      const std::size_t from = runs_.size();
+      reservations.takenIntervals(space_.cells(a_).swept(p.heading, action), {p.x, p.y}, runs_);
+      for (std::size_t i = from; i < runs_.size(); ++i) {
+        if (runs_[i].second == ReservationTable::kForever) runs_[i].second = kNever;
+      }
+    }
+    std::sort(runs_.begin(), runs_.end());
+    Unsafe u;
+    for (const auto& r : runs_) {
+      if (!u.runs.empty() &&
+          (u.runs.back().second == kNever || r.first <= u.runs.back().second + 1)) {
+        if (u.runs.back().second != kNever)
+          u.runs.back().second = std::max(u.runs.back().second, r.second);
+      } else {
+        u.runs.push_back(r);
+      }
+    }
+    return unsafe_.emplace(k, std::move(u)).first->second;
+  }
+
+  const std::vector<Interval>& intervals(StateId s) {
+    auto it = intervals_.find(s);
+    if (it != intervals_.end()) return it->second;
+    const Unsafe& u = unsafe(s, Action::Wait);
+    std::vector<Interval> out;
+    int first = 0;
+    for (const auto& [from, to] : u.runs) {
+      if (from > first) out.push_back({first, from - 1});
+      if (to == kNever) return intervals_.emplace(s, std::move(out)).first->second;
+      first = to + 1;
+    }
+    out.push_back({first, kNever});
+    return intervals_.emplace(s, std::move(out)).first->second;
+  }
+
+  // Earliest departure step in [lo, hi] at which `u` allows the move (-1 if none).
+  static int earliestDeparture(const Unsafe& u, int lo, int hi) {
+    // The first run that ends at or after lo: if it has started by lo, leave right after it.
+    auto it = std::lower_bound(u.runs.begin(), u.runs.end(), lo,
+                               [](const std::pair<int, int>& r, int t) { return r.second < t; });
+    int t = lo;
+    if (it != u.runs.end() && it->first <= lo) {
+      if (it->second == kNever) return -1;
+      t = it->second + 1;
+    }
+    return t <= hi ? t : -1;
+  }
+
+ private:
+  const SearchSpace& space_;
+  int a_;
+  const SoftPathTable& others_;
+  const StateGraph& graph_;
+  std::unordered_map<std::uint64_t, Unsafe> unsafe_;
+  std::unordered_map<StateId, std::vector<Interval>> intervals_;
+  std::vector<std::pair<int, int>> runs_;  // scratch
+};
+
+}  // namespace
+
+namespace {
+
+// Lower bound on the steps from s to `goal`: a move changes one coordinate by one cell, and a
+// different heading takes at least one rotation.
+int stepsBetween(const StateGraph& g, StateId s, StateId goal) {
+  const GridPose p = g.pose(s), q = g.pose(goal);
+  return std::abs(p.x - q.x) + std::abs(p.y - q.y) + (p.heading != q.heading ? 1 : 0);
+}
+
+// Earliest-arriving collision-free way of agent a from `from` at step t0 to `goal`: held for
+// good (t1 == kNever; `goal` is then a's target), or reached by step t1 and held until t1, or
+// reached later, by step t1 + max_delay.
+SafeIntervalResult searchBetween(const SearchSpace& space, int a, const SoftPathTable& others,
+                                 StateId from, int t0, StateId goal, int t1, int max_delay,
+                                 const Deadline& deadline, long long max_expansions) {
+  SafeIntervalResult result;
+  const StateGraph& g = space.graph(a);
+  if (space.distance(a, from) < 0) return result;
+  const bool forever = t1 == kNever;
+  Sipp sipp(space, a, others);
+  const std::vector<Interval>& first = sipp.intervals(from);
+  int first_interval = -1;
+  for (int i = 0; i < static_cast<int>(first.size()) && first_interval < 0; ++i) {
+    if (first[i].first <= t0 && (first[i].last == kNever || t0 <= first[i].last)) first_interval = i;
+  }
+  if (first_interval < 0) return result;  // someone sweeps `from` at t0
+
+  auto heuristic = [&](StateId s) {
+    return forever ? space.distance(a, s) : stepsBetween(g, s, goal);
+  };
+  std::vector<Node> nodes;
+  NodeTable best;  // (state, interval) -> node
+  auto key = [](StateId s, int i) {
+    return (static_cast<std::uint64_t>(i) << 32) | static_cast<std::uint32_t>(s);
+  };
+  auto worse = [&nodes](int x, int y) {
+    const Node &p = nodes[x], &q = nodes[y];
+    if (p.f != q.f) return p.f > q.f;
+    if (p.g != q.g) return p.g < q.g;
+    return x > y;
+  };
+  std::priority_queue<int, std::vector<int>, decltype(worse)> open(worse);
+  auto push = [&](StateId s, int interval, int arrival, int parent) {
+    const int f = arrival + heuristic(s);
+    if (!forever && f > t1 + max_delay) return;  // cannot reach the goal in time
+    const std::uint64_t k = key(s, interval);
+    const int* known = best.find(k);
+    if (known != nullptr && nodes[*known].g <= arrival) return;
+    best.set(k, static_cast<int>(nodes.size()));
+    nodes.push_back({s, interval, arrival, f, parent});
+    open.push(static_cast<int>(nodes.size()) - 1);
+  };
+  push(from, first_interval, t0, -1);
+
+  while (!open.empty()) {
+    if ((result.expansions & 255) == 0 && deadline.expired()) {
+      result.outcome = SafeIntervalResult::Outcome::Expired;
+      return result;
+    }
+    if (result.expansions >= max_expansions) {
+      result.outcome = SafeIntervalResult::Outcome::NodeLimit;
+      return result;
+    }
+    const int index = open.top();
+    open.pop();
+    const Node node = nodes[index];
+    if (*best.find(key(node.s, node.interval)) != index) continue;
+    ++result.expansions;
+    const Interval here = sipp.intervals(node.s)[node.interval];
+    // Finite t1: the agent can wait here until t1 (an arrival after t1 lies in `here` too).
+    const bool arrived = forever ? here.last == kNever : here.last >= t1 - 1;
+    if (node.s == goal && arrived) {
+      std::vector<int> chain;
+      for (int i = index; i >= 0; i = nodes[i].parent) chain.push_back(i);
+      std::reverse(chain.begin(), chain.end());
+      for (std::size_t k = 0; k < chain.size(); ++k) {
+        const Node& n = nodes[chain[k]];
+        const int until = k + 1 < chain.size() ? nodes[chain[k + 1]].g
+                          : forever                ? n.g + 1
+                                                   : std::max(t1, n.g) + 1;
+        for (int t = n.g; t < until; ++t) result.path.push_back(n.s);
+      }
+      result.outcome = SafeIntervalResult::Outcome::Found;
+      return result;
+    }
+    g.forEachSuccessor(node.s, [&](Action act, StateId next) {
+      if (act == Action::Wait || space.distance(a, next) < 0 || !space.allows(a, node.s, act))
+        return;
+      const Unsafe& move = sipp.unsafe(node.s, act);
+      const std::vector<Interval>& there = sipp.intervals(next);
+      for (int j = 0; j < static_cast<int>(there.size()); ++j) {
+        if (there[j].last != kNever && there[j].last < node.g + 1) continue;
+        if (here.last != kNever && there[j].first > here.last + 1) break;
+        const int hi = std::min(here.last, there[j].last == kNever ? kNever : there[j].last - 1);
+        const int departure =
+            Sipp::earliestDeparture(move, std::max(node.g, there[j].first - 1), hi);
+        if (departure >= 0) push(next, j, departure + 1, index);
+      }
+    });
+  }
+  return result;
+}
+
+}  // namespace
+
+SafeIntervalResult safeIntervalSearch(const SearchSpace& space, int a, const SoftPathTable& others,
+                                      const Deadline& deadline, long long max_expansions) {
+  return searchBetween(space, a, others, space.start(a), 0, space.target(a), kNever, 0, deadline,
+                       max_expansions);
+}
+
+SafeIntervalResult safeIntervalSegment(const SearchSpace& space, int a,
+                                       const SoftPathTable& others, StateId from, int t0,
+                                       StateId to, int t1, int max_delay,
+                                       const Deadline& deadline, long long max_expansions) {
+  if (t1 == SoftPathTable::kNever) to = space.target(a);
+  return searchBetween(space, a, others, from, t0, to, t1, max_delay, deadline, max_expansions);
+}
+
+}  // namespace fleet_planner

@@ -1,0 +1,117 @@
+#include "fleet_planner/solvers/search/search_space.h"
+
+#include <set>
+
+#include "fleet_planner/runtime/errors.h"
+#include "fleet_planner/runtime/resource_limits.h"
+
+namespace fleet_planner {
+
+namespace {
+
+// Breadth-first from the target over reversed edges. False (and a partial table) if the deadline
+// passed: it is checked every 16384 states, a few hundred microseconds of work.
+bool restrictedDistances(const SearchSpace& space, int a, const Deadline& deadline, std::vector<std::int32_t>& dist) {
+  const StateGraph& g = space.graph(a);
+  dist.assign(g.stateIdCount(), -1);
+  const StateId target = space.target(a);
+  if (!space.allows(a, target, Action::Wait)) return true;
+  std::vector<StateId> queue{target};
+  dist[target] = 0;
+  for (std::size_t head = 0; head < queue.size(); ++head) {
+    if ((head & 16383) == 16383 && deadline.expired()) return false;
+    const StateId s = queue[head];
+    g.forEachPredecessor(s, [&](Action action, StateId prev) {
+      if (dist[prev] < 0 && space.allows(a, prev, action)) {
+        dist[prev] = dist[s] + 1;
+        queue.push_back(prev);
+      }
+    });
+  }
+  return true;
+}
+
+}  // namespace
+
+SearchSpace::SearchSpace(const Subproblem& problem)
+    : instance_(problem.instance), graphs_(problem.graphs), robots_(problem.robots) {
+  if (instance_ == nullptr || graphs_ == nullptr) throw InvalidInput("subproblem without instance or graphs");
+  const int n = static_cast<int>(instance_->robots.size());
+  if (graphs_->numRobots() != n) throw InvalidInput("subproblem graphs do not match its instance");
+  std::set<int> seen;
+  auto checkIndex = [&](int r, const char* what) {
+    if (r < 0 || r >= n) throw InvalidInput(std::string(what) + " robot index " + std::to_string(r) + " out of range");
+  };
+  for (int r : robots_) {
+    checkIndex(r, "subproblem");
+    if (!seen.insert(r).second) throw InvalidInput("robot index " + std::to_string(r) + " listed twice");
+  }
+  for (const auto& b : problem.blocked) checkIndex(b.robot, "blocked footprint");
+  for (const auto& m : problem.moving) checkIndex(m.robot, "moving obstacle");
+
+  if (robots_.empty()) return;
+  const StateGraph& g0 = graphs_->graph(robots_.front());
+  if (!problem.blocked.empty()) {
+    std::vector<std::uint8_t> cells(static_cast<std::size_t>(g0.width()) * g0.height(), 0);
+    for (const auto& b : problem.blocked) {
+      for (const Cell& c : graphs_->cells(b.robot).body(b.pose.heading).cells()) {
+        const int x = b.pose.x + c.x, y = b.pose.y + c.y;
+        if (x >= 0 && y >= 0 && x < g0.width() && y < g0.height()) cells[static_cast<std::size_t>(y) * g0.width() + x] = 1;
+      }
+    }
+    static_cells_ = std::make_unique<ObstacleIndex>(GridMap(g0.width(), g0.height(), std::move(cells)));
+    has_static_ = true;
+  }
+  if (!problem.moving.empty()) {
+    reservations_ = ReservationTable(g0.width(), g0.height(), problem.moving, *graphs_, g0.actionModel());
+  }
+
+  for (int a = 0; a < numAgents(); ++a) {
+    const Robot& r = instance_->robots[robots_[a]];
+    GridPose start = r.start, target = r.target;
+    for (const StaticFootprint& back : problem.returning) {
+      if (back.robot == robots_[a]) start = target = back.pose;
+    }
+    starts_.push_back(graph(a).id(start));
+    targets_.push_back(graph(a).id(target));
+  }
+  if (const MemoryGuard* guard = problem.deadline.memoryGuard()) {
+    guard->reserve(static_cast<double>(numAgents()) * static_cast<double>(distanceTableBytes(
+                                                          static_cast<long long>(g0.width()) * g0.height())) /
+                       1048576.0,
+                   "the distance tables of " + std::to_string(numAgents()) + " robots");
+  }
+  distances_.resize(numAgents());
+  std::vector<std::int32_t> steps;  // one agent's table as the search fills it
+  for (int a = 0; a < numAgents() && problem_.empty(); ++a) {
+    if (problem.deadline.expired()) {  // one table per agent: on large maps and fleets, seconds
+      stopped_ = true;
+      return;
+    }
+    GridPose start = instance_->robots[robots_[a]].start, target = instance_->robots[robots_[a]].target;
+    if (graph(a).valid(starts_[a])) start = graph(a).pose(starts_[a]);
+    if (graph(a).valid(targets_[a])) target = graph(a).pose(targets_[a]);
+    if (!graph(a).valid(starts_[a])) {
+      problem_ = label(a) + ": start " + toString(start) + " is not a valid state";
+    } else if (!graph(a).valid(targets_[a])) {
+      problem_ = label(a) + ": target " + toString(target) + " is not a valid state";
+    } else if (!allows(a, starts_[a], Action::Wait)) {
+      problem_ = label(a) + ": start " + toString(start) + " overlaps a footprint of another subproblem";
+    } else if (!allows(a, targets_[a], Action::Wait)) {
+      problem_ = label(a) + ": target " + toString(target) + " overlaps a footprint of another subproblem";
+    } else {
+      if (!restrictedDistances(*this, a, problem.deadline, steps)) {
+        stopped_ = true;
+        return;
+      }
+      distances_[a].assign(steps);
+      if (distances_[a][starts_[a]] < 0) {
+        problem_ = label(a) + ": target " + toString(target) + " is not reachable from start " + toString(start);
+      }
+    }
+  }
+}
+
+std::string SearchSpace::label(int a) const { return "robot '" + instance_->robots[robots_[a]].id + "'"; }
+
+}  // namespace fleet_planner

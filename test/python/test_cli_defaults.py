@@ -1,0 +1,55 @@
+"""fleet_planner_cli plans like the node: `solve` without backend flags uses the node's backend,
+fallback and mode (config/planner.yaml), reports them in its JSON, and rejects unknown backend
+options by name. Needs $FLEET_PLANNER_CLI (ctest sets it)."""
+import json
+import os
+import subprocess
+import unittest
+
+import yaml
+
+ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
+SCENARIO = os.path.join(ROOT, "test", "data", "two_robots_open.yaml")
+
+
+def solve(*flags):
+    cli = os.environ.get("FLEET_PLANNER_CLI")
+    if not cli:
+        raise AssertionError("set FLEET_PLANNER_CLI to the fleet_planner_cli binary")
+    return subprocess.run([cli, "solve", "--instance", SCENARIO] + list(flags), stdout=subprocess.PIPE,
+                          stderr=subprocess.PIPE, universal_newlines=True, timeout=120)
+
+
+class CliDefaultsTest(unittest.TestCase):
+    def test_solve_without_flags_plans_like_the_node(self):
+        with open(os.path.join(ROOT, "config", "planner.yaml")) as f:
+            node = yaml.safe_load(f)
+        run = solve()
+        self.assertEqual(run.returncode, 0, run.stderr)
+        j = json.loads(run.stdout)
+        self.assertEqual(j["status"], "SUCCESS", j)
+        self.assertTrue(j["valid"])
+        self.assertEqual(j["backend"], node["backend"])
+        self.assertEqual(j["fallback"], node["fallback"])
+        self.assertEqual(j["mode"], "layered" if node["decomposition"] else "raw")
+        self.assertEqual(j["steps"], "1234"[:node["decomposition_steps"]])
+
+    def test_fallback_none_and_backend_options(self):
+        run = solve("--mode", "raw", "--backend", "la_cbs", "--fallback", "none",
+                    "--backend-param", "la_cbs.max_candidate_conflicts=1")
+        self.assertEqual(run.returncode, 0, run.stderr)
+        j = json.loads(run.stdout)
+        self.assertEqual((j["status"], j["backend"], j["fallback"], j["mode"]), ("SUCCESS", "la_cbs", "", "raw"))
+
+    def test_an_unknown_backend_option_is_named(self):
+        run = solve("--backend-param", "la_lns.neighbourhood=3")
+        self.assertEqual(run.returncode, 2, run.stdout)
+        self.assertIn("neighbourhood", run.stderr)
+        self.assertIn("neighborhood_size", run.stderr)  # the known names are listed
+        run = solve("--backend-param", "la_lns.neighborhood_size")
+        self.assertEqual(run.returncode, 2, run.stdout)
+        self.assertIn("BACKEND.OPTION=VALUE", run.stderr)
+
+
+if __name__ == "__main__":
+    unittest.main()
