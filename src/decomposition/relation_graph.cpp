@@ -72,7 +72,10 @@ class Builder {
           // A move sweeps only its two footprints, each related on its own; a rotation sweeps
           // more, so a state is also related to what its rotations sweep (its reverse rotation,
           // with the same sweep, relates the state it turns to).
-          for (Action a : {Action::RotateCcw, Action::RotateCw}) {
+          // On a lattice (step > 1) a move also sweeps the footprints between its two states:
+          // the state it leaves is related to those too (every path over the move visits it).
+          for (Action a : {Action::RotateCcw, Action::RotateCw, Action::Forward, Action::Backward}) {
+            if ((a == Action::Forward || a == Action::Backward) && cells_.step() == 1) continue;
             for (const Cell& d : cells_.swept(h, a).cells()) {
               const StateId u = g_.id({c.x - d.x, c.y - d.y, h});
               if (u != kNoState && g_.allows(u, a)) mark(u, sat);

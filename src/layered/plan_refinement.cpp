@@ -30,13 +30,15 @@ Path cheaperPath(const Instance& instance, const FleetGraphs& graphs, const std:
   sub.robots = {robot};
   sub.deadline = deadline;
   // A path of cost below `cost` stays where the Manhattan distances to start and target add up
-  // to less than it: robots that never come within reach of that region cannot matter.
+  // to less than it times the cells of a move (the lattice step): robots that never come within
+  // reach of that region cannot matter.
   const GridPose& from = instance.robots[robot].start;
   const GridPose& to = instance.robots[robot].target;
   const int radius = radiusOf(graphs.cells(robot));
+  const int step = graphs.cells(robot).step();
   for (int j = 0; j < static_cast<int>(paths.size()); ++j) {
     if (j == robot) continue;
-    const int slack = cost - 1 + 4 * (radius + radiusOf(graphs.cells(j)));
+    const int slack = (cost - 1) * step + 4 * (radius + radiusOf(graphs.cells(j)));
     const bool near = std::any_of(paths[j].begin(), paths[j].end(), [&](const GridPose& q) {
       return std::abs(q.x - from.x) + std::abs(q.y - from.y) + std::abs(q.x - to.x) + std::abs(q.y - to.y) <= slack;
     });

@@ -2,8 +2,8 @@
 
 namespace fleet_planner {
 
-GridPose applyAction(const GridPose& p, Action action) {
-  const Cell step = kHeadingStep[p.heading];
+GridPose applyAction(const GridPose& p, Action action, const ActionModel& model) {
+  const Cell step{kHeadingStep[p.heading].x * model.step, kHeadingStep[p.heading].y * model.step};
   switch (action) {
     case Action::Wait:
       return p;
@@ -22,11 +22,19 @@ GridPose applyAction(const GridPose& p, Action action) {
 std::optional<Action> actionBetween(const GridPose& from, const GridPose& to,
                                     const ActionModel& model) {
   if (!validHeading(from.heading) || !validHeading(to.heading)) return std::nullopt;
-  for (Action a : {Action::Wait, Action::Forward, Action::Backward, Action::RotateCcw,
-                   Action::RotateCw}) {
-    if (a == Action::Backward && !model.allow_backward) continue;
-    if (applyAction(from, a) == to) return a;
+  if (from == to) return Action::Wait;
+  if (from.x == to.x && from.y == to.y) {
+    for (Action a : {Action::RotateCcw, Action::RotateCw}) {
+      if (applyAction(from, a) == to) return a;
+    }
+    return std::nullopt;
   }
+  // A move: the same heading, 1..step cells along it.
+  const int length = moveLength(from, to);
+  if (from.heading != to.heading || length > model.step) return std::nullopt;
+  const ActionModel exact{model.allow_backward, length};
+  if (applyAction(from, Action::Forward, exact) == to) return Action::Forward;
+  if (model.allow_backward && applyAction(from, Action::Backward, exact) == to) return Action::Backward;
   return std::nullopt;
 }
 

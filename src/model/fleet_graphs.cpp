@@ -8,7 +8,7 @@
 
 namespace fleet_planner {
 
-FleetGraphs::Groups FleetGraphs::group(const std::vector<Footprint>& footprints) {
+FleetGraphs::Groups FleetGraphs::group(const std::vector<Footprint>& footprints, int step) {
   // Discretise each distinct footprint once, then group equal cell sets.
   Groups groups;
   std::vector<std::shared_ptr<const FootprintCells>>& distinct = groups.cells;
@@ -21,7 +21,7 @@ FleetGraphs::Groups FleetGraphs::group(const std::vector<Footprint>& footprints)
       if (footprints[j] == footprints[i]) found = robot_graph[j];
     }
     if (found < 0) {
-      auto cells = std::make_shared<const FootprintCells>(footprints[i]);
+      auto cells = std::make_shared<const FootprintCells>(footprints[i], step);
       auto range = by_hash.equal_range(cells->cellsHash());
       for (auto it = range.first; it != range.second && found < 0; ++it) {
         if (distinct[it->second]->sameCells(*cells)) found = it->second;
@@ -49,7 +49,7 @@ const GridMap& FleetGraphs::admit(const GridMap& map, const Groups& groups, cons
 
 FleetGraphs::FleetGraphs(const GridMap& map, const std::vector<Footprint>& footprints, ActionModel model,
                          int threads, const ResourceLimits& limits, const Deadline& deadline)
-    : FleetGraphs(map, group(footprints), model, threads, limits, deadline) {}
+    : FleetGraphs(map, group(footprints, model.step), model, threads, limits, deadline) {}
 
 FleetGraphs::FleetGraphs(const GridMap& map, Groups groups, ActionModel model, int threads,
                          const ResourceLimits& limits, const Deadline& deadline)

@@ -95,9 +95,10 @@ std::size_t hashCells(const CellSet& set, std::size_t seed) {
 
 }  // namespace
 
-FootprintCells::FootprintCells(const Footprint& footprint) : footprint_(footprint) {
+FootprintCells::FootprintCells(const Footprint& footprint, int step) : footprint_(footprint), step_(step) {
   const std::string problem = footprintProblem(footprint);
   if (!problem.empty()) throw InvalidInput("invalid footprint (" + footprint.describe() + "): " + problem);
+  if (step < 1) throw InvalidInput("lattice step must be >= 1 cell (got " + std::to_string(step) + ")");
 
   const double reach = footprint.circumscribedRadius();
   const Polygon outline = footprint.outline();
@@ -110,11 +111,18 @@ FootprintCells::FootprintCells(const Footprint& footprint) : footprint_(footprin
     }
   }
   for (int h = 0; h < kHeadings; ++h) {
-    const Cell step = kHeadingStep[h];
     auto& sw = swept_[h];
     sw[static_cast<int>(Action::Wait)] = body_[h];
-    sw[static_cast<int>(Action::Forward)] = body_[h].unionWith(body_[h], step);
-    sw[static_cast<int>(Action::Backward)] = body_[h].unionWith(body_[h], {-step.x, -step.y});
+    for (int dir = 0; dir < 2; ++dir) {  // forward, backward
+      const int sign = dir == 0 ? 1 : -1;
+      CellSet cells = body_[h];
+      for (int k = 1; k <= step; ++k) {
+        cells = cells.unionWith(body_[h], {sign * k * kHeadingStep[h].x, sign * k * kHeadingStep[h].y});
+        moves_[h][dir].push_back(cells);
+      }
+    }
+    sw[static_cast<int>(Action::Forward)] = moves_[h][0].back();
+    sw[static_cast<int>(Action::Backward)] = moves_[h][1].back();
     for (bool ccw : {true, false}) {
       const Action a = ccw ? Action::RotateCcw : Action::RotateCw;
       const int end = ccw ? kRotateCcw[h] : kRotateCw[h];
@@ -136,7 +144,7 @@ FootprintCells::FootprintCells(const Footprint& footprint) : footprint_(footprin
 }
 
 bool FootprintCells::sameCells(const FootprintCells& other) const {
-  if (hash_ != other.hash_) return false;
+  if (hash_ != other.hash_ || step_ != other.step_) return false;
   for (int h = 0; h < kHeadings; ++h) {
     if (body_[h] != other.body_[h]) return false;
     for (int a = 0; a < kActions; ++a) {

@@ -83,7 +83,7 @@ class Checker {
       }
     }
     cells_.reserve(n);
-    for (const Robot& r : instance_.robots) cells_.push_back(std::make_unique<FootprintCells>(r.footprint));
+    for (const Robot& r : instance_.robots) cells_.push_back(std::make_unique<FootprintCells>(r.footprint, model_.step));
 
     int horizon = 0;
     for (const Path& p : plan_.paths) horizon = std::max(horizon, static_cast<int>(p.size()) - 1);
@@ -96,6 +96,7 @@ class Checker {
     if (Violation v = vertexConflicts(0); v.kind != Violation::Kind::None) return v;
 
     std::vector<Action> actions(n);
+    std::vector<const CellSet*> sweeps(n);
     for (int t = 0; t < horizon; ++t) {
       for (int i = 0; i < n; ++i) {
         const GridPose& from = stateAt(plan_.paths[i], t);
@@ -105,10 +106,11 @@ class Checker {
           return fail(Violation::Kind::IllegalAction, i, -1, t,
                       "no action leads from " + toString(from) + " to " + toString(to));
         actions[i] = *action;
+        sweeps[i] = &sweptBy(i, from, *action, to);
         if (!cellsFree(map_, cells_[i]->body(to.heading), to))
           return fail(Violation::Kind::StateInObstacle, i, -1, t + 1,
                       "footprint at " + toString(to) + " covers a blocked or off-map cell");
-        if (!cellsFree(map_, cells_[i]->swept(from.heading, *action), from))
+        if (!cellsFree(map_, *sweeps[i], from))
           return fail(Violation::Kind::SweepInObstacle, i, -1, t,
                       std::string(actionName(*action)) + " from " + toString(from) +
                           " sweeps a blocked or off-map cell");
@@ -117,12 +119,12 @@ class Checker {
       std::vector<Box> boxes(n);
       for (int i = 0; i < n; ++i) {
         const GridPose& a = stateAt(plan_.paths[i], t);
-        boxes[i] = boxOf(cells_[i]->swept(a.heading, actions[i]), a);
+        boxes[i] = boxOf(*sweeps[i], a);
       }
       for (const auto& [i, j] : overlappingBoxes(boxes)) {
         const GridPose& a = stateAt(plan_.paths[i], t);
         const GridPose& b = stateAt(plan_.paths[j], t);
-        if (sweepsOverlap(*cells_[i], a, actions[i], *cells_[j], b, actions[j]))
+        if (CellSet::overlap(*sweeps[i], {a.x, a.y}, *sweeps[j], {b.x, b.y}))
           return fail(Violation::Kind::TransferConflict, i, j, t,
                       std::string(actionName(actions[i])) + " from " + toString(a) + " and " +
                           actionName(actions[j]) + " from " + toString(b) + " sweep a common cell");
@@ -132,6 +134,15 @@ class Checker {
   }
 
  private:
+  // The cells robot i sweeps from `from` to `to` by `action`, relative to `from`: a move of its
+  // own length (up to the lattice step), a rotation or a wait.
+  const CellSet& sweptBy(int i, const GridPose& from, Action action, const GridPose& to) const {
+    if (action == Action::Forward || action == Action::Backward) {
+      return cells_[i]->moveSwept(from.heading, action == Action::Forward, moveLength(from, to));
+    }
+    return cells_[i]->swept(from.heading, action);
+  }
+
   Violation vertexConflicts(int t) {
     const int n = static_cast<int>(cells_.size());
     std::vector<Box> boxes(n);

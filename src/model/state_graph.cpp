@@ -18,14 +18,17 @@ StateGraph::StateGraph(const GridMap& map, const ObstacleIndex& obstacles,
     if (!(flags_[s] & 1u)) continue;
     ++num_valid_;
     const GridPose p = pose(s);
-    const Cell step = kHeadingStep[p.heading];
-    // A move sweeps the two footprints only, so it is free when both states are valid.
-    if (valid(id({p.x + step.x, p.y + step.y, p.heading}))) {
-      flags_[s] |= 1u << static_cast<int>(Action::Forward);
-    }
-    if (model_.allow_backward && valid(id({p.x - step.x, p.y - step.y, p.heading}))) {
-      flags_[s] |= 1u << static_cast<int>(Action::Backward);
-    }
+    // A move sweeps the footprints at every cell on the way and nothing else, so it is free when
+    // the states on the way are valid (their headings are the same).
+    const Cell dir = kHeadingStep[p.heading];
+    auto clear = [&](int sign) {
+      for (int k = 1; k <= model_.step; ++k) {
+        if (!valid(id({p.x + sign * k * dir.x, p.y + sign * k * dir.y, p.heading}))) return false;
+      }
+      return true;
+    };
+    if (clear(1)) flags_[s] |= 1u << static_cast<int>(Action::Forward);
+    if (model_.allow_backward && clear(-1)) flags_[s] |= 1u << static_cast<int>(Action::Backward);
     for (Action a : {Action::RotateCcw, Action::RotateCw}) {
       if (valid(next(s, a)) && !obstacles.blocked(fc.swept(p.heading, a), {p.x, p.y})) {
         flags_[s] |= 1u << static_cast<int>(a);

@@ -10,7 +10,7 @@ std::shared_ptr<const FleetGraphs> GraphCache::get(const GridMap& map, std::uint
                                                    bool& cached) {
   std::lock_guard<std::mutex> lock(mutex_);
   cached = graphs_ && map_version_ == map_version && footprints_ == footprints &&
-           model_.allow_backward == model.allow_backward;
+           model_.allow_backward == model.allow_backward && model_.step == model.step;
   if (!cached) {
     graphs_.reset();  // free the old graphs before building new ones
     graphs_ = std::make_shared<const FleetGraphs>(map, footprints, model, threads, limits, deadline);

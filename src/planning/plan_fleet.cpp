@@ -3,6 +3,8 @@
 
 #include <memory>
 
+#include "fleet_planner/model/plan_validator.h"
+#include "fleet_planner/planning/lattice.h"
 #include "fleet_planner/runtime/errors.h"
 #include "fleet_planner/runtime/memory_guard.h"
 
@@ -31,14 +33,115 @@ LayeredOptions layeredOptions(const PlanningOptions& o, int threads) {
   return l;
 }
 
-/// The status of a call whose deadline passed while the graphs were built.
-void graphsNotBuilt(PlanningResult& result, const Deadline& deadline, const MemoryGuard& memory,
-                    const DeadlineExpired& e) {
-  result.status = deadline.outOfMemory() ? SolveStatus::ResourceLimit
-                  : deadline.cancelled() ? SolveStatus::Cancelled
-                                         : SolveStatus::Timeout;
-  result.reason = deadline.outOfMemory() ? memory.reason() : e.what();
+std::string precheckReason(const SolvabilityReport& report) {
+  const auto& found = report.problems;
+  std::string reason = found.front().reason;
+  if (found.size() > 1) reason += " (and " + std::to_string(found.size() - 1) + " more)";
+  return reason;
 }
+
+/// One call on one lattice step. Returns false when the fleet is to be planned again on a finer
+/// lattice (the reason is in result.lattice_notes); true when `result` is the answer.
+class LatticeAttempt {
+ public:
+  LatticeAttempt(const GridMap& map, const Instance& instance, const PlanningOptions& options,
+                 const PlanningCall& call, const Deadline& deadline, const MemoryGuard& memory,
+                 PlanningResult& result)
+      : map_(map), instance_(instance), options_(options), call_(call), deadline_(deadline), memory_(memory),
+        result_(result) {}
+
+  bool run(int step) {
+    ActionModel model = options_.model;
+    model.step = step;
+    const auto graphs = buildGraphs(model);
+    if (!graphs) return true;  // TIMEOUT or RESOURCE_LIMIT while building them
+    if (step == 1) return planOn(instance_, *graphs, nullptr, 1);
+    const LatticeInstance lattice = connectToLattice(map_, instance_, *graphs, step);
+    if (!lattice.problem.empty()) return giveUp(step, lattice.problem);
+    return planOn(lattice.instance, *graphs, &lattice, step);
+  }
+
+ private:
+  std::shared_ptr<const FleetGraphs> buildGraphs(const ActionModel& model) {
+    std::vector<Footprint> footprints;
+    for (const Robot& r : instance_.robots) footprints.push_back(r.footprint);
+    const auto t = std::chrono::steady_clock::now();
+    std::shared_ptr<const FleetGraphs> graphs;
+    bool cached = false;
+    try {
+      if (call_.cache != nullptr) {
+        graphs = call_.cache->get(map_, call_.map_version, footprints, model, result_.threads, options_.limits,
+                                  deadline_, cached);
+      } else {
+        graphs = std::make_shared<const FleetGraphs>(map_, footprints, model, result_.threads, options_.limits,
+                                                     deadline_);
+      }
+    } catch (const DeadlineExpired& e) {
+      result_.status = deadline_.outOfMemory() ? SolveStatus::ResourceLimit
+                       : deadline_.cancelled() ? SolveStatus::Cancelled
+                                               : SolveStatus::Timeout;
+      result_.reason = deadline_.outOfMemory() ? memory_.reason() : e.what();
+    }
+    result_.graphs_cached = cached;
+    result_.precompute_s += cached ? 0.0 : since(t);
+    return graphs;
+  }
+
+  bool giveUp(int step, const std::string& why) {
+    result_.lattice_notes.push_back("step " + std::to_string(step) + ": " + why);
+    return false;
+  }
+
+  // Plans `planned` (the instance itself, or its robots on the lattice) and, on a lattice, adds
+  // the connections and validates the whole plan on the map's cells.
+  bool planOn(const Instance& planned, const FleetGraphs& graphs, const LatticeInstance* lattice, int step) {
+    const auto t_check = std::chrono::steady_clock::now();
+    SolvabilityReport precheck = checkSolvability(planned, graphs, deadline_);
+    if (!precheck.solvable()) {
+      if (lattice) return giveUp(step, precheckReason(precheck));
+      result_.precheck = std::move(precheck);
+      result_.status = SolveStatus::Infeasible;
+      result_.reason = precheckReason(result_.precheck);
+      result_.decompose_s = since(t_check);
+      return true;
+    }
+    std::vector<std::string> notes = std::move(result_.lattice_notes);
+    const double precompute_s = result_.precompute_s;
+    const bool cached = result_.graphs_cached;
+    static_cast<LayeredResult&>(result_) =
+        planLayered(map_, planned, graphs, layeredOptions(options_, result_.threads), deadline_);
+    result_.lattice_notes = std::move(notes);
+    result_.precompute_s = precompute_s;
+    result_.graphs_cached = cached;
+    result_.lattice_step = step;
+    if (!lattice) return true;
+    if (result_.status == SolveStatus::Infeasible) return giveUp(step, "no plan on this lattice: " + result_.reason);
+    if (!result_.success()) return true;
+    std::string problem;
+    std::optional<Plan> full = assembleLatticePlan(*lattice, graphs, result_.plan, problem);
+    if (!full) return giveUp(step, problem);
+    result_.plan = std::move(*full);
+    const ValidationResult check = validatePlan(map_, instance_, result_.plan, graphs.graph(0).actionModel());
+    if (!check.valid()) {
+      result_.status = SolveStatus::InternalError;
+      result_.reason = "internal error: the plan with its lattice connections fails validation: " +
+                       check.violation.message;
+      return true;
+    }
+    std::vector<GridPose> targets;
+    for (const auto& r : instance_.robots) targets.push_back(r.target);
+    result_.metrics = planMetrics(result_.plan, targets);
+    return true;
+  }
+
+  const GridMap& map_;
+  const Instance& instance_;
+  const PlanningOptions& options_;
+  const PlanningCall& call_;
+  const Deadline& deadline_;
+  const MemoryGuard& memory_;
+  PlanningResult& result_;
+};
 
 }  // namespace
 
@@ -58,41 +161,9 @@ PlanningResult planFleet(const GridMap& map, const Instance& instance, const Pla
   const MemoryGuard memory(options.limits.max_memory_mb);
   const Deadline deadline =
       Deadline::in(options.time_limit - since(call.started), call.cancel).withMemoryGuard(&memory);
-
-  // State graphs: they count against the time limit like everything else.
-  std::vector<Footprint> footprints;
-  for (const Robot& r : instance.robots) footprints.push_back(r.footprint);
-  const auto t_graphs = std::chrono::steady_clock::now();
-  std::shared_ptr<const FleetGraphs> graphs;
-  try {
-    if (call.cache != nullptr) {
-      graphs = call.cache->get(map, call.map_version, footprints, options.model, result.threads, options.limits,
-                               deadline, result.graphs_cached);
-    } else {
-      graphs = std::make_shared<const FleetGraphs>(map, footprints, options.model, result.threads, options.limits,
-                                                   deadline);
-    }
-  } catch (const DeadlineExpired& e) {
-    graphsNotBuilt(result, deadline, memory, e);
-  }
-  result.precompute_s = result.graphs_cached ? 0.0 : since(t_graphs);
-
-  if (graphs) {
-    // The pre-check names every robot that cannot reach its target and every overlap.
-    const auto t_check = std::chrono::steady_clock::now();
-    result.precheck = checkSolvability(instance, *graphs, deadline);
-    if (!result.precheck.solvable()) {
-      const auto& found = result.precheck.problems;
-      result.status = SolveStatus::Infeasible;
-      result.reason = found.front().reason;
-      if (found.size() > 1) result.reason += " (and " + std::to_string(found.size() - 1) + " more)";
-      result.decompose_s = since(t_check);
-    } else {
-      const SolvabilityReport precheck = std::move(result.precheck);
-      static_cast<LayeredResult&>(result) =
-          planLayered(map, instance, *graphs, layeredOptions(options, result.threads), deadline);
-      result.precheck = precheck;
-    }
+  LatticeAttempt attempt(map, instance, options, call, deadline, memory, result);
+  for (int step = initialLatticeStep(options, instance);; step = std::max(1, step / 2)) {
+    if (attempt.run(step) || step == 1) break;
   }
   result.time_s = since(call.started);
   return result;

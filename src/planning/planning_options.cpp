@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <thread>
 
+#include "fleet_planner/planning/lattice.h"
 #include "fleet_planner/solvers/registry.h"
 
 namespace fleet_planner {
@@ -29,8 +30,13 @@ std::vector<std::string> checkPlanningOptions(const PlanningOptions& o) {
   for (const std::string& p : checkBackendParameters(o.backend_parameters)) problems.push_back("backend_parameters: " + p);
   if (o.last_step < 1 || o.last_step > 4) problems.push_back("steps: must be 1..4 (got " + std::to_string(o.last_step) + ")");
   if (o.threads < 0) problems.push_back("threads: must be >= 0, 0 for the machine's cores (got " + std::to_string(o.threads) + ")");
+  if (o.lattice_step < 0) problems.push_back("lattice_step: must be >= 0 cells, 0 for the default (got " + std::to_string(o.lattice_step) + ")");
   if (!(o.time_limit >= 0)) problems.push_back("time_limit: must be >= 0 seconds");
   return problems;
+}
+
+int initialLatticeStep(const PlanningOptions& options, const Instance& instance) {
+  return options.lattice_step > 0 ? options.lattice_step : defaultLatticeStep(instance);
 }
 
 int effectiveThreads(const PlanningOptions& options) {

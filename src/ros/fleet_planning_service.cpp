@@ -221,6 +221,9 @@ void FleetPlanningService::planChecked(const Request& request, const StartLookup
   options.last_step = request.steps == 0 ? config_.decomposition_steps : request.steps;
   options.seed = request.seed;
   options.time_limit = time_limit;
+  if (config_.lattice_resolution > 0) {
+    options.lattice_step = std::max(1, static_cast<int>(std::lround(config_.lattice_resolution / grid.resolution())));
+  }
   PlanningCall planning_call;
   planning_call.started = t0;
   planning_call.cancel = cancel;

@@ -111,6 +111,7 @@ void fillResponse(const Instance& instance, const GridMap& grid, const PlanningR
   }
   res.statistics.subproblems = static_cast<std::uint32_t>(result.subproblems.size());
   res.statistics.largest_subproblem = largest;
+  res.statistics.lattice_step = static_cast<std::uint32_t>(result.lattice_step);
 
   if (!result.success()) {
     std::string message = std::string(statusName(result.status)) + ": " + result.reason;
@@ -148,7 +149,8 @@ void fillResponse(const Instance& instance, const GridMap& grid, const PlanningR
   res.status = Response::SUCCESS;
   res.message = "planned " + std::to_string(n) + " robots with " + result.backend +
                 (result.layered ? " (layered, " : " (raw, ") +
-                std::to_string(result.subproblems.size()) + " subproblems): SOC " + std::to_string(result.metrics.soc) +
+                std::to_string(result.subproblems.size()) + " subproblems, lattice step " +
+                std::to_string(result.lattice_step) + "): SOC " + std::to_string(result.metrics.soc) +
                 ", makespan " + std::to_string(result.metrics.makespan) + " steps";
 }
 

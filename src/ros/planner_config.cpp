@@ -103,6 +103,7 @@ std::vector<std::string> checkPlannerConfig(const PlannerConfig& c) {
   check.positive("max_memory_mb", c.max_memory_mb);
   check.range("occupied_threshold", c.occupied_threshold, 1, 100);
   check.oneOf("unknown_policy", c.unknown_policy, {"obstacle", "free"});
+  check.nonNegative("lattice_resolution", c.lattice_resolution);
   check.nonNegative("position_tolerance", c.position_tolerance);
   check.nonNegative("heading_tolerance", c.heading_tolerance);
   check.between("sweep_tolerance", c.sweep_tolerance, 0.0, Footprint::kMaxSweepTolerance);

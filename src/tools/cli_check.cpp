@@ -26,6 +26,17 @@ void addPrecheckCommand(CLI::App& app) {
   });
 }
 
+// The longest move of the plan (cells between two consecutive poses of one heading).
+int longestMove(const Plan& plan) {
+  int longest = 0;
+  for (const Path& path : plan.paths) {
+    for (std::size_t t = 0; t + 1 < path.size(); ++t) {
+      if (path[t].heading == path[t + 1].heading) longest = std::max(longest, moveLength(path[t], path[t + 1]));
+    }
+  }
+  return longest;
+}
+
 }  // namespace
 
 void addCheckCommand(CLI::App& app) {
@@ -33,14 +44,20 @@ void addCheckCommand(CLI::App& app) {
   auto options = std::make_shared<ProblemOptions>();
   auto plan_path = std::make_shared<std::string>();
   auto backward = std::make_shared<bool>(false);
+  auto step = std::make_shared<int>(0);
   addProblemOptions(cmd, *options);
   cmd->add_option("--plan", *plan_path, "plan YAML file")->required();
   cmd->add_flag("--backward", *backward, "backward moves are legal");
-  cmd->callback([options, plan_path, backward] {
+  cmd->add_option("--lattice-step", *step,
+                  "longest legal move in cells (default 0: the plan's longest straight move, so that a plan "
+                  "made on a lattice checks; each move's sweep is checked cell by cell either way)")
+      ->check(CLI::NonNegativeNumber);
+  cmd->callback([options, plan_path, backward, step] {
     const Problem p = loadProblem(*options);
     const Plan plan = loadPlan(*plan_path, p.instance);
     ActionModel model;
     model.allow_backward = *backward;
+    model.step = *step > 0 ? *step : std::max(1, longestMove(plan));
     const ValidationResult result = validatePlan(p.map, p.instance, plan, model);
     nlohmann::json j{{"valid", result.valid()}, {"agents", p.instance.robots.size()}};
     if (result.valid()) {

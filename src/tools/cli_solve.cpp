@@ -45,6 +45,8 @@ nlohmann::json resultJson(const PlanningResult& result, const std::string& mode,
           {"agents", n},
           {"seed", seed},
           {"threads", result.threads},
+          {"lattice_step", result.lattice_step},
+          {"lattice_notes", result.lattice_notes},
           {"precompute_s", result.precompute_s},
           {"decompose_s", result.decompose_s},
           {"solve_s", result.solve_s},
@@ -98,6 +100,11 @@ void addSolveCommand(CLI::App& app) {
   cmd->add_option("--threads", o->planning.threads,
                   "threads for graphs, relation graphs and subproblems (default 0: the machine's cores)")
       ->check(CLI::NonNegativeNumber);
+  cmd->add_option("--lattice-step", o->planning.lattice_step,
+                  "planning lattice: moves advance this many map cells (default 0: a third of the narrowest "
+                  "robot's width, at least 1; the benchmark pools plan at 1). A fleet that cannot be planned on it "
+                  "is planned on half the step (lattice_notes says why)")
+      ->check(CLI::NonNegativeNumber);
   cmd->add_flag("--no-compress", o->no_compress, "keep the merged plan's waits (no plan compression)");
   cmd->add_flag("--no-refine", o->no_refine, "keep the merged paths (no replanning of single robots)");
   cmd->add_flag("--one-chain", o->one_chain,
@@ -132,7 +139,9 @@ void addSolveCommand(CLI::App& app) {
     j["peak_rss_mb"] = peakRssMb();
     // The CLI's own check of the returned plan, outside the timing: true only for a plan that the
     // independent validator accepts (the planner validates too; this records it per run).
-    j["valid"] = result.success() && validatePlan(p.map, p.instance, result.plan).valid();
+    ActionModel model = options.model;
+    model.step = result.lattice_step;
+    j["valid"] = result.success() && validatePlan(p.map, p.instance, result.plan, model).valid();
     printJsonLine(j);
     if (result.status == SolveStatus::InternalError) setExitCode(kExitInternalError);
   });

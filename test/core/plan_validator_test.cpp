@@ -100,6 +100,28 @@ TEST(PlanValidator, SweepInObstacle) {
   EXPECT_EQ(v.time, 0);
 }
 
+TEST(PlanValidator, LatticeMovesSweepEveryCellOnTheWay) {
+  // A wall cell at x = 2: a move of 3 cells from x = 0 jumps over it in one step, and is still a
+  // sweep through it; without the wall it is legal on a lattice of 3 (and of 4), not of 2.
+  const GridMap wall = mapFromRows({"..@..."});
+  const GridMap open = freeMap(6, 1);
+  const std::vector<Robot> robots = {dot("a", {0, 0, 0}, {3, 0, 0})};
+  const std::vector<Path> jump = {{{0, 0, 0}, {3, 0, 0}}};
+  ActionModel lattice;
+  lattice.step = 3;
+  EXPECT_EQ(check(wall, robots, jump, lattice).kind, Kind::SweepInObstacle);
+  EXPECT_EQ(check(open, robots, jump, lattice).kind, Kind::None);
+  lattice.step = 4;
+  EXPECT_EQ(check(open, robots, jump, lattice).kind, Kind::None);
+  lattice.step = 2;
+  EXPECT_EQ(check(open, robots, jump, lattice).kind, Kind::IllegalAction);
+  // Two robots whose long moves pass through each other's way in one step.
+  const std::vector<Robot> pair = {dot("a", {0, 0, 0}, {3, 0, 0}), dot("b", {4, 0, 1}, {1, 0, 1})};
+  lattice.step = 3;
+  EXPECT_EQ(check(open, pair, {{{0, 0, 0}, {3, 0, 0}}, {{4, 0, 1}, {1, 0, 1}}}, lattice).kind,
+            Kind::TransferConflict);
+}
+
 TEST(PlanValidator, VertexConflict) {
   const GridMap map = freeMap(5, 1);
   const auto v = check(map, {dot("a", {0, 0, 0}, {2, 0, 0}), dot("b", {4, 0, 1}, {3, 0, 1})},

@@ -39,7 +39,7 @@ class FleetGraphs {
     std::vector<std::shared_ptr<const FootprintCells>> cells;
     std::vector<int> of_robot;
   };
-  static Groups group(const std::vector<Footprint>& footprints);
+  static Groups group(const std::vector<Footprint>& footprints, int step);
   /// Sum over robots of their graph's valid states.
   long long totalStates() const;
   std::size_t memoryBytes() const;

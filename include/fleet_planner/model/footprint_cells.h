@@ -4,7 +4,10 @@
 /// [a_i, s, s'], all relative to the cell the robot stands on.
 ///
 /// - A cell is covered when the footprint overlaps the cell's square with positive area.
-/// - A move sweeps the union of the footprints before and after.
+/// - A move of k cells sweeps the union of the footprints at every cell on the way (k + 1 of
+///   them): exact for a straight translation along a grid axis. Moves of every length up to the
+///   lattice step are kept (the lattice's own moves, and the shorter ones that connect a pose
+///   to it).
 /// - A rotation sweeps both footprints and every cell the footprint passes over while it turns
 ///   90 degrees about its origin. This is exact for footprints that are star-shaped about the
 ///   origin (circles, blocks and convex polygons containing the origin, most real robots); for
@@ -21,16 +24,23 @@ namespace fleet_planner {
 
 class FootprintCells {
  public:
-  /// Throws InvalidInput if the footprint is not usable (see footprintProblem()).
-  explicit FootprintCells(const Footprint& footprint);
+  /// Moves advance `step` cells (ActionModel::step, >= 1). Throws InvalidInput if the footprint
+  /// is not usable (see footprintProblem()).
+  explicit FootprintCells(const Footprint& footprint, int step = 1);
 
   const Footprint& footprint() const { return footprint_; }
   /// Cells covered at `heading`, relative to the robot's cell.
   const CellSet& body(int heading) const { return body_[heading]; }
-  /// Cells covered while doing `action` from `heading`, relative to the starting cell.
+  /// Cells covered while doing `action` from `heading`, relative to the starting cell (a move:
+  /// of `step()` cells).
   const CellSet& swept(int heading, Action action) const {
     return swept_[heading][static_cast<int>(action)];
   }
+  /// Cells covered by a move of `length` cells (1..step()) from `heading`, forward or backward.
+  const CellSet& moveSwept(int heading, bool forward, int length) const {
+    return moves_[heading][forward ? 0 : 1][length - 1];
+  }
+  int step() const { return step_; }
   /// Largest squared length of any offset in any body or sweep.
   int maxNormSq() const { return max_norm_sq_; }
 
@@ -43,6 +53,8 @@ class FootprintCells {
   Footprint footprint_;
   std::array<CellSet, kHeadings> body_;
   std::array<std::array<CellSet, kActions>, kHeadings> swept_;
+  int step_ = 1;
+  std::array<std::array<std::vector<CellSet>, 2>, kHeadings> moves_;  ///< [heading][forward?0:1][length-1]
   int max_norm_sq_ = 0;
   std::size_t hash_ = 0;
 };

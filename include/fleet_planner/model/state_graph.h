@@ -4,7 +4,9 @@
 /// One graph serves every robot whose footprint covers the same cells.
 ///
 /// Storage is one byte per state id (cell * 4 + heading) over the whole grid: bit 0 = state
-/// valid, bit 1 + a = action `a` leads to a valid state through free cells.
+/// valid, bit 1 + a = action `a` leads to a valid state through free cells. A move advances
+/// ActionModel::step cells, so the states reachable from a pose form its lattice: every `step`
+/// cells along each axis through it.
 #include <cstdint>
 #include <memory>
 #include <vector>
@@ -72,7 +74,7 @@ class StateGraph {
 
 inline StateId StateGraph::next(StateId s, Action a) const {
   const int h = s % kHeadings;
-  const Cell step = kHeadingStep[h];
+  const Cell step{kHeadingStep[h].x * model_.step, kHeadingStep[h].y * model_.step};
   switch (a) {
     case Action::Wait:
       return s;
@@ -91,7 +93,7 @@ inline StateId StateGraph::next(StateId s, Action a) const {
 template <class F>
 void StateGraph::forEachPredecessor(StateId s, F&& f) const {
   const GridPose p = pose(s);
-  const Cell step = kHeadingStep[p.heading];
+  const Cell step{kHeadingStep[p.heading].x * model_.step, kHeadingStep[p.heading].y * model_.step};
   const StateId back = id({p.x - step.x, p.y - step.y, p.heading});
   if (back != kNoState && allows(back, Action::Forward)) f(Action::Forward, back);
   const StateId ahead = id({p.x + step.x, p.y + step.y, p.heading});

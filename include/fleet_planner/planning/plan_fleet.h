@@ -1,15 +1,17 @@
 #pragma once
 /// The one way in: plans a fleet on a map with PlanningOptions. The node, the CLI and the stress
 /// tool call this and nothing below it. It owns what every call needs in the same order:
-///   memory guard and deadline (from PlanningCall::started) -> state graphs (cached) ->
-///   solvability pre-check -> Layered LA-MAPF or raw (layered_planner.h: decomposition, solving,
-///   merging, refinement, compression) -> the independent validator.
+///   memory guard and deadline (from PlanningCall::started) -> the lattice (lattice.h) -> state
+///   graphs (cached) -> connections to the lattice -> solvability pre-check -> Layered LA-MAPF
+///   or raw (layered_planner.h: decomposition, solving, merging, refinement, compression) ->
+///   the connections off the lattice -> the independent validator, on the map's cells.
 /// Outcomes are values (status and reason); only bad options (InvalidInput) and a fleet whose
 /// graphs exceed the limits before any search (ResourceLimitError) throw.
 #include <atomic>
 #include <chrono>
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include "fleet_planner/layered/layered_planner.h"
 #include "fleet_planner/model/instance_check.h"
@@ -32,6 +34,9 @@ struct PlanningResult : LayeredResult {
   std::string fallback;  ///< as used ("" for none)
   int threads = 1;       ///< as used
   bool layered = true;   ///< as used: decomposed (false: raw)
+  int lattice_step = 1;  ///< the lattice the plan was made on (cells)
+  /// Why each coarser lattice tried first was given up ("step 4: robot 'a' cannot reach ...").
+  std::vector<std::string> lattice_notes;
   /// The pre-check's per-robot problems (unreachable target, start or target overlaps): the
   /// status is INFEASIBLE when there are any, and nothing was planned.
   SolvabilityReport precheck;

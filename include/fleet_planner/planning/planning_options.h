@@ -9,6 +9,7 @@
 
 #include "fleet_planner/layered/time_budget.h"
 #include "fleet_planner/model/action.h"
+#include "fleet_planner/model/instance.h"
 #include "fleet_planner/runtime/resource_limits.h"
 #include "fleet_planner/solvers/backend_parameters.h"
 
@@ -39,6 +40,13 @@ struct PlanningOptions {
   /// max_memory_mb bounds the call's resident memory (graphs refused, searches stopped:
   /// RESOURCE_LIMIT); the map and robot limits are checked by the loaders and the node.
   ResourceLimits limits;
+  /// The planning lattice's step in map cells (lattice.h): moves advance this many cells. 0: the
+  /// default for the fleet (defaultLatticeStep: 1 for the paper's benchmark robots). A fleet that
+  /// cannot be planned on it (a robot that cannot reach its target on it, connections that
+  /// collide, a lattice plan proven impossible) is planned again on a lattice of half the step,
+  /// down to 1 (every such step is reported).
+  int lattice_step = 0;
+  /// The action model; its `step` is set from lattice_step.
   ActionModel model;
   /// How the deadline is divided between the stages (time_budget.h).
   TimeBudget budget;
@@ -48,6 +56,9 @@ struct PlanningOptions {
 /// 'la_lsn' (known: ...)"): unknown backends, a parallel fallback for a serial backend, backend
 /// parameters that do not configure their backend, values out of range. Empty when usable.
 std::vector<std::string> checkPlanningOptions(const PlanningOptions& options);
+
+/// The lattice step a call starts with: options.lattice_step, or the fleet's default for 0.
+int initialLatticeStep(const PlanningOptions& options, const Instance& instance);
 
 /// `options.threads`, or the machine's cores (at least 1) for 0.
 int effectiveThreads(const PlanningOptions& options);

@@ -26,6 +26,9 @@ struct PlannerConfig {
   /// Backend tried on a subproblem that the backend fails, before the safeguard merges it
   /// (LayeredOptions::fallback); "" for none.
   std::string fallback = "la_lns";
+  /// The planning lattice's step in metres (rounded to map cells, at least 1); 0: the fleet's
+  /// default (a third of the narrowest robot's width). See planning/lattice.h.
+  double lattice_resolution = 0.0;
   /// Options of the backends by name: {backend: {option: value}} (backend_parameters.h).
   BackendParameters backend_parameters;
   bool refine = true;                ///< replan delayed robots after merging (plan_refinement.h)

@@ -1,0 +1,176 @@
+// The planning lattice (lattice.h): plans on lattices of 2-8 cells are valid on the map's own
+// cells, connections put any start and target on a robot's lattice, a door as wide as a robot
+// stays open when a lattice line passes through it, and the same input gives the same plan.
+#include <gtest/gtest.h>
+
+#include <iostream>
+
+#include "fleet_planner/model/plan_validator.h"
+#include "fleet_planner/planning/lattice.h"
+#include "fleet_planner/planning/plan_fleet.h"
+#include "fleet_planner/runtime/random.h"
+#include "test_maps.h"
+#include "test_robots.h"
+
+namespace fleet_planner::test {
+namespace {
+
+/// A robot `w` cells wide and `l` long (a block about its centre cell).
+Robot box(const std::string& id, double l, double w, GridPose start, GridPose target) {
+  return makeRobot(id, Footprint::block(-l / 2, -w / 2, l / 2, w / 2), start, target);
+}
+
+PlanningOptions onLattice(int step) {
+  PlanningOptions o;
+  o.lattice_step = step;
+  o.threads = 1;
+  o.time_limit = 20.0;
+  return o;
+}
+
+::testing::AssertionResult validOnCells(const GridMap& map, const Instance& instance, const PlanningResult& r) {
+  if (!r.success()) return ::testing::AssertionFailure() << statusName(r.status) << ": " << r.reason;
+  ActionModel model;
+  model.step = r.lattice_step;
+  const ValidationResult v = validatePlan(map, instance, r.plan, model);
+  if (!v.valid()) return ::testing::AssertionFailure() << v.violation.message;
+  return ::testing::AssertionSuccess();
+}
+
+/// A 72 x 48 map with a few pillars, and `n` robots of 4-7 cells at random free, non-overlapping
+/// grid poses (seeded).
+struct RandomWorld {
+  GridMap map = freeMap(72, 48);
+  Instance instance;
+  RandomWorld(int n, std::uint64_t seed) {
+    std::vector<std::string> rows(48, std::string(72, '.'));
+    Rng rng(seed);
+    for (int k = 0; k < 6; ++k) {
+      const int x = static_cast<int>(rng.uniformInt(10, 60)), y = static_cast<int>(rng.uniformInt(8, 38));
+      for (int dy = 0; dy < 3; ++dy)
+        for (int dx = 0; dx < 3; ++dx) rows[y + dy][x + dx] = '@';
+    }
+    map = mapFromRows(rows);
+    std::vector<Robot> robots;
+    auto fits = [&](const Robot& r, bool start) {
+      const FootprintCells cells(r.footprint);
+      const GridPose& p = start ? r.start : r.target;
+      for (const Cell& c : cells.body(p.heading).cells()) {
+        if (map.blocked(p.x + c.x, p.y + c.y)) return false;
+      }
+      for (const Robot& o : robots) {
+        if (footprintsOverlapRough(r, p, o, start ? o.start : o.target)) return false;
+      }
+      return true;
+    };
+    for (int i = 0; robots.size() < static_cast<std::size_t>(n) && i < 10000; ++i) {
+      const double l = static_cast<double>(rng.uniformInt(4, 7)), w = static_cast<double>(rng.uniformInt(4, 6));
+      auto pose = [&] {
+        return GridPose{static_cast<int>(rng.uniformInt(5, 66)), static_cast<int>(rng.uniformInt(5, 42)),
+                        static_cast<int>(rng.uniformInt(0, 3))};
+      };
+      Robot r = box(std::to_string(robots.size()), l, w, pose(), pose());
+      if (fits(r, true) && fits(r, false)) robots.push_back(r);
+    }
+    instance.robots = robots;
+  }
+  // Circumscribed discs apart (conservative and cheap).
+  static bool footprintsOverlapRough(const Robot& a, const GridPose& pa, const Robot& b, const GridPose& pb) {
+    const double reach = a.footprint.circumscribedRadius() + b.footprint.circumscribedRadius() + 1.5;
+    const double dx = pa.x - pb.x, dy = pa.y - pb.y;
+    return dx * dx + dy * dy < reach * reach;
+  }
+};
+
+TEST(Lattice, DefaultStepIsAThirdOfTheNarrowestRobot) {
+  Instance fleet;
+  fleet.robots = {box("wide", 20, 12, {0, 0, 0}, {0, 0, 0}), box("narrow", 9, 7, {0, 0, 0}, {0, 0, 0})};
+  EXPECT_EQ(defaultLatticeStep(fleet), 2);  // 7 cells / 3
+  fleet.robots = {makeRobot("disc", Footprint::circle(9.0), {0, 0, 0}, {0, 0, 0})};
+  EXPECT_EQ(defaultLatticeStep(fleet), 6);
+  fleet.robots = {makeRobot("benchmark", Footprint::circle(1.5), {0, 0, 0}, {0, 0, 0})};
+  EXPECT_EQ(defaultLatticeStep(fleet), 1);
+}
+
+TEST(Lattice, PlansOnLatticesOfTwoToEightCellsAreValidOnTheMapsCells) {
+  int worlds = 0, on_lattice = 0;
+  for (std::uint64_t seed = 1; seed <= 8 && worlds < 4; ++seed) {
+    const RandomWorld world(6, seed);
+    ASSERT_GE(world.instance.robots.size(), 4u);
+    if (!planFleet(world.map, world.instance, onLattice(1)).success()) continue;  // no plan at all
+    ++worlds;
+    for (int step = 2; step <= 8; step += 2) {
+      const PlanningResult r = planFleet(world.map, world.instance, onLattice(step));
+      EXPECT_TRUE(validOnCells(world.map, world.instance, r)) << "seed " << seed << " step " << step;
+      if (r.lattice_step == step) ++on_lattice;
+      // A coarser lattice given up is always said, with the reason.
+      EXPECT_EQ(r.lattice_step == step, r.lattice_notes.empty()) << "seed " << seed << " step " << step;
+      for (const std::string& note : r.lattice_notes) std::cout << "seed " << seed << ": " << note << "\n";
+    }
+  }
+  EXPECT_EQ(worlds, 4);
+  EXPECT_GE(on_lattice, 8);  // of 16: most fleets plan on the lattice asked for
+}
+
+TEST(Lattice, ConnectionsPutAStartAndATargetOffTheLatticeOnIt) {
+  // On a lattice of 4 through the start, the target is 3 cells off in x and 2 in y.
+  const GridMap map = freeMap(40, 24);
+  Instance instance;
+  instance.robots = {box("r", 6, 4, {6, 6, 0}, {29, 16, 2})};
+  const PlanningResult r = planFleet(map, instance, onLattice(4));
+  ASSERT_TRUE(validOnCells(map, instance, r));
+  EXPECT_EQ(r.lattice_step, 4);
+  const Path& path = r.plan.paths[0];
+  int short_moves = 0, long_moves = 0;
+  for (std::size_t t = 0; t + 1 < path.size(); ++t) {
+    const int length = path[t].heading == path[t + 1].heading ? moveLength(path[t], path[t + 1]) : 0;
+    short_moves += length > 0 && length < 4;
+    long_moves += length == 4;
+  }
+  EXPECT_GE(short_moves, 1);
+  EXPECT_GE(long_moves, 3);
+}
+
+TEST(Lattice, ADoorAsWideAsTheRobotStaysOpenWhenALatticeLinePassesThroughIt) {
+  // A wall at x = 20 with a door 5 cells wide (y = 10..14); the robot covers 5 cells across.
+  std::vector<std::string> rows(25, std::string(40, '.'));
+  for (int y = 0; y < 25; ++y) {
+    if (y < 10 || y > 14) rows[y][20] = '@';
+  }
+  const GridMap map = mapFromRows(rows);
+  Instance instance;
+  instance.robots = {box("r", 5, 5, {4, 12, 0}, {35, 12, 0})};  // the lattice line y = 12 runs through the door
+  const PlanningResult r = planFleet(map, instance, onLattice(4));
+  ASSERT_TRUE(validOnCells(map, instance, r));
+  EXPECT_EQ(r.lattice_step, 4) << (r.lattice_notes.empty() ? "" : r.lattice_notes.front());
+}
+
+TEST(Lattice, ARobotThatTheLatticeCannotServeIsNamedAndPlannedOnAFinerOne) {
+  // The same door, but the robot's lattice lines (y = 11 + 4k) miss it: the lattice of 4 cannot
+  // take it through; the plan is made on a finer lattice and the reason names the robot.
+  std::vector<std::string> rows(25, std::string(40, '.'));
+  for (int y = 0; y < 25; ++y) {
+    if (y < 10 || y > 14) rows[y][20] = '@';
+  }
+  const GridMap map = mapFromRows(rows);
+  Instance instance;
+  instance.robots = {box("r", 5, 5, {4, 11, 0}, {35, 11, 0})};
+  const PlanningResult r = planFleet(map, instance, onLattice(4));
+  ASSERT_TRUE(validOnCells(map, instance, r));
+  EXPECT_LT(r.lattice_step, 4);
+  ASSERT_FALSE(r.lattice_notes.empty());
+  EXPECT_NE(r.lattice_notes.front().find("step 4"), std::string::npos) << r.lattice_notes.front();
+  EXPECT_NE(r.lattice_notes.front().find("'r'"), std::string::npos) << r.lattice_notes.front();
+}
+
+TEST(Lattice, SameInputSamePlan) {
+  const RandomWorld world(6, 7);
+  const PlanningResult a = planFleet(world.map, world.instance, onLattice(3));
+  const PlanningResult b = planFleet(world.map, world.instance, onLattice(3));
+  ASSERT_TRUE(validOnCells(world.map, world.instance, a));
+  EXPECT_EQ(a.lattice_step, b.lattice_step);
+  EXPECT_EQ(a.plan.paths, b.plan.paths);
+}
+
+}  // namespace
+}  // namespace fleet_planner::test
