@@ -4,9 +4,9 @@
 Usage: scripts/realmap_scenario.py --map MAP.yaml --fleet FLEET.yaml --robots N --seed S --out OUT.yaml
 
 The robots take the fleet file's footprints in turn (metres, costmap_2d conventions, padding
-applied) and are named <fleet id>_<k>. Each start and goal is a random free cell at a random grid
-heading, where the robot's circumscribed disc covers only free cells and keeps clear of the other
-robots' starts (goals); the cells are the map's own (a scenario's poses are cells and headings).
+applied) and are named <fleet id>_<k>. Each start and goal is a random free cell at a random yaw
+(--grid-headings: a random grid heading), where the robot's circumscribed disc covers only free
+cells and keeps clear of the other robots' starts (goals); the cells are the map's own.
 Seeded: the same arguments give the same file. Unknown cells count as blocked.
 """
 import argparse
@@ -32,6 +32,12 @@ def reach(footprint):
     return max(math.hypot(x, y) for x, y in footprint.points)
 
 
+def nearest_heading(yaw):
+    """The grid heading (0 +x, 1 -x, 2 +y, 3 -y) nearest to `yaw`."""
+    quarter = int(round(yaw / (math.pi / 2))) % 4  # 0 +x, 1 +y, 2 -x, 3 -y
+    return (0, 2, 1, 3)[quarter]
+
+
 def scenario_footprint(footprint, resolution):
     """The footprint in cells, as a scenario writes it."""
     s = 1.0 / resolution
@@ -51,6 +57,7 @@ def main(argv=None):
     p.add_argument("--robots", type=int, required=True)
     p.add_argument("--seed", type=int, default=1)
     p.add_argument("--out", required=True)
+    p.add_argument("--grid-headings", action="store_true", help="poses on the grid headings only (no yaw)")
     args = p.parse_args(argv)
     grid = load_map(args.map)
     fleet = load_fleet(args.fleet)
@@ -77,7 +84,8 @@ def main(argv=None):
                     continue
                 if any((x - ox) ** 2 + (y - oy) ** 2 < (r + orr) ** 2 for ox, oy, orr in taken[end]):
                     continue
-                pose[end] = (x, y, rng.randrange(4))
+                yaw = rng.uniform(-math.pi, math.pi)
+                pose[end] = (x, y, nearest_heading(yaw), None if args.grid_headings else yaw)
                 taken[end].append((x, y, r))
                 break
             else:
@@ -89,8 +97,12 @@ def main(argv=None):
                 % (args.robots, os.path.basename(args.fleet), os.path.basename(args.map), args.seed))
         f.write("map: %s\nrobots:\n" % os.path.relpath(os.path.abspath(args.map), out_dir))
         for k, (footprint, pose) in enumerate(robots):
-            f.write("  - id: %s_%d\n    footprint: %s\n    start: [%d, %d, %d]\n    target: [%d, %d, %d]\n"
-                    % ((footprint.robot_id, k, scenario_footprint(footprint, res)) + pose["start"] + pose["target"]))
+            f.write("  - id: %s_%d\n    footprint: %s\n" % (footprint.robot_id, k, scenario_footprint(footprint, res)))
+            for end in ("start", "target"):
+                x, y, h, yaw = pose[end]
+                f.write("    %s: [%d, %d, %d]\n" % (end, x, y, h))
+                if yaw is not None:
+                    f.write("    %s_yaw: %.6f\n" % (end, yaw))
     return 0
 
 

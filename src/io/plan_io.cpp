@@ -1,5 +1,7 @@
 #include "fleet_planner/io/plan_io.h"
 
+#include "fleet_planner/model/robot_cells.h"
+
 #include <map>
 #include <sstream>
 #include <string>
@@ -14,11 +16,7 @@ namespace {
 
 constexpr const char* kFormat = "fleet_planner/plan/1";
 
-std::vector<GridPose> targetsOf(const Instance& instance) {
-  std::vector<GridPose> targets;
-  for (const Robot& robot : instance.robots) targets.push_back(robot.target);
-  return targets;
-}
+std::vector<GridPose> targetsOf(const Instance& instance, const Plan& plan) { return planTargets(instance, plan); }
 
 Path readPath(const io::YamlMapping& entry, const std::string& who) {
   const io::YamlField& field = entry.require("path");
@@ -70,7 +68,7 @@ std::string planToYaml(const Instance& instance, const Plan& plan) {
       throw InvalidInput(robotLabel(instance.robots[i]) + " has an empty path");
     }
   }
-  const PlanMetrics metrics = planMetrics(plan, targetsOf(instance));
+  const PlanMetrics metrics = planMetrics(plan, targetsOf(instance, plan));
   std::ostringstream out;
   out << "# fleet_planner plan: each path lists [x, y, heading] at time steps 0, 1, 2, ...\n"
       << "format: " << kFormat << "\n"
@@ -80,7 +78,7 @@ std::string planToYaml(const Instance& instance, const Plan& plan) {
   for (std::size_t i = 0; i < plan.paths.size(); ++i) {
     const Robot& robot = instance.robots[i];
     out << "  - id: " << io::yamlScalar(robot.id) << "\n"
-        << "    cost: " << pathCost(plan.paths[i], robot.target) << "\n"
+        << "    cost: " << pathCost(plan.paths[i], planTarget(robot, plan.paths[i])) << "\n"
         << "    path: [";
     const char* separator = "";
     for (const GridPose& s : plan.paths[i]) {
@@ -147,10 +145,10 @@ Plan loadPlan(const std::string& path, const Instance& instance) {
 
   for (const io::YamlMapping& entry : entries) {
     const std::size_t i = index_of.at(entry.require("id").node.Scalar());
-    checkMetric(entry, "cost", pathCost(plan.paths[i], instance.robots[i].target),
+    checkMetric(entry, "cost", pathCost(plan.paths[i], planTarget(instance.robots[i], plan.paths[i])),
                 "cost of robot " + io::quoted(instance.robots[i].id));
   }
-  const PlanMetrics metrics = planMetrics(plan, targetsOf(instance));
+  const PlanMetrics metrics = planMetrics(plan, targetsOf(instance, plan));
   checkMetric(top, "soc", metrics.soc, "soc");
   checkMetric(top, "makespan", metrics.makespan, "makespan");
   return plan;

@@ -127,7 +127,7 @@ Instance parseScenario(std::istream& in, const std::string& path) {
     const YAML::Node node = robots.node[i];
     const int line = io::yamlLine(node, robots.line);
     const io::YamlMapping fields(node, path, line, "robots[" + std::to_string(i) + "]",
-                                 {"id", "footprint", "start", "target"});
+                                 {"id", "footprint", "start", "target", "start_yaw", "target_yaw"});
     Robot robot;
     const io::YamlField& id = fields.require("id");
     robot.id = fields.string(id, "robots[" + std::to_string(i) + "] id");
@@ -147,6 +147,9 @@ Instance parseScenario(std::istream& in, const std::string& path) {
     }
     robot.start = readPose(fields, "start", who);
     robot.target = readPose(fields, "target", who);
+    // Optional yaws (radians) off the grid headings: the plan turns from / to them in place.
+    if (const io::YamlField* yaw = fields.find("start_yaw")) robot.start_yaw = fields.number(*yaw, who + " start_yaw");
+    if (const io::YamlField* yaw = fields.find("target_yaw")) robot.target_yaw = fields.number(*yaw, who + " target_yaw");
     instance.robots.push_back(std::move(robot));
   }
   return instance;
@@ -175,6 +178,8 @@ std::string scenarioToYaml(const Instance& instance, const std::string& map_file
         << "    footprint: " << footprintYaml(robot.footprint) << "\n"
         << "    start: " << poseYaml(robot.start) << "\n"
         << "    target: " << poseYaml(robot.target) << "\n";
+    if (robot.start_yaw) out << "    start_yaw: " << io::formatNumber(*robot.start_yaw) << "\n";
+    if (robot.target_yaw) out << "    target_yaw: " << io::formatNumber(*robot.target_yaw) << "\n";
   }
   return out.str();
 }

@@ -84,6 +84,14 @@ CellSet rotationSweep(const Polygon& outline, int heading, bool ccw, double reac
   });
 }
 
+Polygon rotatedBy(const Polygon& polygon, double yaw) {
+  const double c = std::cos(yaw), s = std::sin(yaw);
+  Polygon out;
+  out.reserve(polygon.size());
+  for (const Vec2& p : polygon) out.push_back(Vec2(c * p.x() - s * p.y(), s * p.x() + c * p.y()));
+  return out;
+}
+
 std::size_t hashCells(const CellSet& set, std::size_t seed) {
   for (const auto& r : set.runs()) {
     for (int v : {r.dy, r.x0, r.x1}) {
@@ -141,6 +149,52 @@ FootprintCells::FootprintCells(const Footprint& footprint, int step) : footprint
     }
     hash_ = hashCells(body_[h], hash_);
   }
+}
+
+CellSet footprintCellsAt(const Footprint& footprint, double yaw) {
+  const double reach = footprint.circumscribedRadius();
+  if (footprint.kind == Footprint::Kind::Circle) {
+    return cellsWhere(reach, [&](const Vec2& c) { return geometry::squareOverlapsDisc(c, reach); });
+  }
+  // A grid heading's yaw gives exactly the grid heading's cells (no rounding at cell borders).
+  const double quarters = yaw / (geometry::kPi / 2);
+  const bool on_grid = std::abs(quarters - std::round(quarters)) < 1e-9;
+  const Polygon poly = on_grid ? Polygon{} : rotatedBy(footprint.outline(), yaw);
+  Polygon quarter;
+  if (on_grid) {
+    const int q = ((static_cast<int>(std::lround(quarters)) % 4) + 4) % 4;
+    for (const Vec2& p : footprint.outline()) quarter.push_back(geometry::rotateQuarter(p, q));
+  }
+  const Polygon& shape = on_grid ? quarter : poly;
+  return cellsWhere(reach, [&](const Vec2& c) { return geometry::squareOverlapsPolygon(c, shape); });
+}
+
+CellSet turnSweep(const Footprint& footprint, double from_yaw, double to_yaw) {
+  const CellSet start = footprintCellsAt(footprint, from_yaw), end = footprintCellsAt(footprint, to_yaw);
+  if (footprint.kind == Footprint::Kind::Circle) return start;
+  double turn = std::remainder(to_yaw - from_yaw, 2 * geometry::kPi);  // in [-pi, pi]
+  const double reach = footprint.circumscribedRadius();
+  const double half = 0.5 - footprint.sweep_tolerance;
+  const Polygon first = rotatedBy(footprint.outline(), from_yaw);
+  const auto hull_first = starHull(first), hull_last = starHull(rotatedBy(footprint.outline(), from_yaw + turn));
+  struct Sector {
+    double r, a0, a1;
+  };
+  std::vector<Sector> sectors;
+  for (const Vec2& v : first) {
+    const double r = v.norm();
+    if (r < geometry::kEps) continue;
+    const double a = std::atan2(v.y(), v.x());
+    sectors.push_back(turn >= 0 ? Sector{r, a, a + turn} : Sector{r, a + turn, a});
+  }
+  const CellSet swept = cellsWhere(reach, [&](const Vec2& c) {
+    if (anyTriangleCovers(hull_first, c, half) || anyTriangleCovers(hull_last, c, half)) return true;
+    for (const auto& s : sectors) {
+      if (geometry::squareOverlapsSector(c, s.r, s.a0, s.a1, half)) return true;
+    }
+    return false;
+  });
+  return swept.unionWith(start, {0, 0}).unionWith(end, {0, 0});
 }
 
 bool FootprintCells::sameCells(const FootprintCells& other) const {

@@ -1,5 +1,7 @@
 #include "fleet_planner/model/plan_validator.h"
 
+#include "fleet_planner/model/robot_cells.h"
+
 #include <algorithm>
 #include <memory>
 #include <sstream>
@@ -71,10 +73,12 @@ class Checker {
       const Robot& r = instance_.robots[i];
       const Path& p = plan_.paths[i];
       if (p.empty()) return fail(Violation::Kind::EmptyPath, i, -1, 0, "path is empty");
-      if (p.front() != r.start)
+      // A start or target yaw off the grid: the path turns there from or to any heading.
+      auto samePlace = [](const GridPose& a, const GridPose& b) { return a.x == b.x && a.y == b.y; };
+      if (r.start_yaw ? !samePlace(p.front(), r.start) : p.front() != r.start)
         return fail(Violation::Kind::WrongStart, i, -1, 0,
                     "path starts at " + toString(p.front()) + ", start is " + toString(r.start));
-      if (p.back() != r.target)
+      if (r.target_yaw ? !samePlace(p.back(), r.target) : p.back() != r.target)
         return fail(Violation::Kind::WrongTarget, i, -1, static_cast<int>(p.size()) - 1,
                     "path ends at " + toString(p.back()) + ", target is " + toString(r.target));
       for (const GridPose& s : p) {
@@ -84,30 +88,33 @@ class Checker {
     }
     cells_.reserve(n);
     for (const Robot& r : instance_.robots) cells_.push_back(std::make_unique<FootprintCells>(r.footprint, model_.step));
+    for (int i = 0; i < n; ++i) {
+      motions_.push_back(std::make_unique<RobotCells>(instance_.robots[i], *cells_[i], plan_.paths[i]));
+      if (!motions_[i]->shapeProblem().empty())
+        return fail(Violation::Kind::IllegalAction, i, -1, -1, motions_[i]->shapeProblem());
+    }
 
     int horizon = 0;
     for (const Path& p : plan_.paths) horizon = std::max(horizon, static_cast<int>(p.size()) - 1);
 
     for (int i = 0; i < n; ++i) {
-      if (!cellsFree(map_, cells_[i]->body(plan_.paths[i][0].heading), plan_.paths[i][0]))
+      if (!cellsFree(map_, motions_[i]->bodyAt(0), plan_.paths[i][0]))
         return fail(Violation::Kind::StateInObstacle, i, -1, 0,
                     "footprint at " + toString(plan_.paths[i][0]) + " covers a blocked or off-map cell");
     }
     if (Violation v = vertexConflicts(0); v.kind != Violation::Kind::None) return v;
 
-    std::vector<Action> actions(n);
     std::vector<const CellSet*> sweeps(n);
     for (int t = 0; t < horizon; ++t) {
       for (int i = 0; i < n; ++i) {
         const GridPose& from = stateAt(plan_.paths[i], t);
         const GridPose& to = stateAt(plan_.paths[i], t + 1);
-        const auto action = actionBetween(from, to, model_);
-        if (!action)
+        const auto action = motions_[i]->actionAt(t, model_);
+        sweeps[i] = motions_[i]->sweepAt(t, model_);
+        if (!action || sweeps[i] == nullptr)
           return fail(Violation::Kind::IllegalAction, i, -1, t,
                       "no action leads from " + toString(from) + " to " + toString(to));
-        actions[i] = *action;
-        sweeps[i] = &sweptBy(i, from, *action, to);
-        if (!cellsFree(map_, cells_[i]->body(to.heading), to))
+        if (!cellsFree(map_, motions_[i]->bodyAt(t + 1), to))
           return fail(Violation::Kind::StateInObstacle, i, -1, t + 1,
                       "footprint at " + toString(to) + " covers a blocked or off-map cell");
         if (!cellsFree(map_, *sweeps[i], from))
@@ -126,34 +133,25 @@ class Checker {
         const GridPose& b = stateAt(plan_.paths[j], t);
         if (CellSet::overlap(*sweeps[i], {a.x, a.y}, *sweeps[j], {b.x, b.y}))
           return fail(Violation::Kind::TransferConflict, i, j, t,
-                      std::string(actionName(actions[i])) + " from " + toString(a) + " and " +
-                          actionName(actions[j]) + " from " + toString(b) + " sweep a common cell");
+                      std::string(actionName(*motions_[i]->actionAt(t, model_))) + " from " + toString(a) + " and " +
+                          actionName(*motions_[j]->actionAt(t, model_)) + " from " + toString(b) + " sweep a common cell");
       }
     }
     return {};
   }
 
  private:
-  // The cells robot i sweeps from `from` to `to` by `action`, relative to `from`: a move of its
-  // own length (up to the lattice step), a rotation or a wait.
-  const CellSet& sweptBy(int i, const GridPose& from, Action action, const GridPose& to) const {
-    if (action == Action::Forward || action == Action::Backward) {
-      return cells_[i]->moveSwept(from.heading, action == Action::Forward, moveLength(from, to));
-    }
-    return cells_[i]->swept(from.heading, action);
-  }
-
   Violation vertexConflicts(int t) {
     const int n = static_cast<int>(cells_.size());
     std::vector<Box> boxes(n);
     for (int i = 0; i < n; ++i) {
       const GridPose& a = stateAt(plan_.paths[i], t);
-      boxes[i] = boxOf(cells_[i]->body(a.heading), a);
+      boxes[i] = boxOf(motions_[i]->bodyAt(t), a);
     }
     for (const auto& [i, j] : overlappingBoxes(boxes)) {
       const GridPose& a = stateAt(plan_.paths[i], t);
       const GridPose& b = stateAt(plan_.paths[j], t);
-      if (footprintsOverlap(*cells_[i], a, *cells_[j], b))
+      if (CellSet::overlap(motions_[i]->bodyAt(t), {a.x, a.y}, motions_[j]->bodyAt(t), {b.x, b.y}))
         return fail(Violation::Kind::VertexConflict, i, j, t,
                     "footprints at " + toString(a) + " and " + toString(b) + " overlap");
     }
@@ -181,6 +179,7 @@ class Checker {
   const Plan& plan_;
   const ActionModel& model_;
   std::vector<std::unique_ptr<FootprintCells>> cells_;
+  std::vector<std::unique_ptr<RobotCells>> motions_;
 };
 
 }  // namespace

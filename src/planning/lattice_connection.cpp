@@ -4,6 +4,7 @@
 
 #include "fleet_planner/model/collision.h"
 #include "fleet_planner/model/plan_validator.h"
+#include "fleet_planner/model/instance_check.h"
 #include "fleet_planner/planning/lattice.h"
 
 namespace fleet_planner {
@@ -50,16 +51,110 @@ bool appendRotation(const StateGraph& g, const GridPose& p, int h, Path& out) {
   return true;
 }
 
-/// Every valid way to connect robot `r`, cheapest first (ties in a fixed order).
-std::vector<Choice> choicesFor(const Robot& r, const StateGraph& g, int s) {
+/// The first map cell of `cells` (at `pose`) that is blocked or off the map, as "(x,y)"; empty if
+/// none is.
+std::string blockedCell(const GridMap& map, const CellSet& cells, const GridPose& pose) {
+  for (const Cell& c : cells.cells()) {
+    if (map.blocked(pose.x + c.x, pose.y + c.y)) {
+      return "(" + std::to_string(pose.x + c.x) + "," + std::to_string(pose.y + c.y) + ")";
+    }
+  }
+  return "";
+}
+
+/// The two grid headings within a quarter turn of `yaw`, the nearer first.
+std::vector<int> headingsAround(double yaw) {
+  std::vector<std::pair<double, int>> by_gap;
+  for (int h = 0; h < kHeadings; ++h) {
+    by_gap.push_back({std::abs(std::remainder(yaw - headingYaw(h), 2 * 3.141592653589793)), h});
+  }
+  std::sort(by_gap.begin(), by_gap.end());
+  return {by_gap[0].second, by_gap[1].second};
+}
+
+/// One end's ways on or off the grid headings: poses at the end's cell, and the heading the
+/// lattice side leaves or arrives on.
+struct EndWay {
+  Path poses;   ///< start side: from the start to (S, heading); target side: from (G, heading) on
+  int heading;
+};
+
+/// The start's ways: a turn from the start yaw onto a heading near it (a step of its own), if any,
+/// then at most one quarter turn. Empty, with `why`, if the start cannot turn at all.
+std::vector<EndWay> startWays(const Robot& r, const StateGraph& g, const GridMap& map, std::string& why) {
+  const GridPose& S = r.start;
+  std::vector<EndWay> out;
+  std::vector<Path> bases;
+  if (r.start_yaw) {
+    for (int h : headingsAround(*r.start_yaw)) {
+      const GridPose on{S.x, S.y, h};
+      const std::string hit = blockedCell(map, turnSweep(r.footprint, *r.start_yaw, headingYaw(h)), on);
+      if (hit.empty() && g.valid(g.id(on))) bases.push_back({on, on});
+      else if (why.empty()) why = "turning in place from its start yaw covers the blocked cell " + (hit.empty() ? toString(on) : hit);
+    }
+  } else {
+    bases.push_back({S});
+  }
+  for (const Path& base : bases) {
+    const int h1 = base.back().heading;
+    for (int hc : {h1, kRotateCcw[h1], kRotateCw[h1]}) {
+      EndWay way{base, hc};
+      if (appendRotation(g, base.back(), hc, way.poses)) out.push_back(std::move(way));
+    }
+  }
+  return out;
+}
+
+/// The target's ways: arriving on a heading at most one quarter turn from the final heading,
+/// then the turn to the target yaw (a step of its own), if any.
+std::vector<EndWay> targetWays(const Robot& r, const StateGraph& g, const GridMap& map, std::string& why) {
+  const GridPose& G = r.target;
+  std::vector<EndWay> out;
+  std::vector<int> finals;
+  if (r.target_yaw) {
+    for (int h : headingsAround(*r.target_yaw)) {
+      const GridPose on{G.x, G.y, h};
+      const std::string hit = blockedCell(map, turnSweep(r.footprint, headingYaw(h), *r.target_yaw), on);
+      if (hit.empty() && g.valid(g.id(on))) finals.push_back(h);
+      else if (why.empty()) why = "turning in place to its target yaw covers the blocked cell " + (hit.empty() ? toString(on) : hit);
+    }
+  } else {
+    finals.push_back(G.heading);
+  }
+  for (int hg : finals) {
+    for (int hf : {hg, kRotateCw[hg], kRotateCcw[hg]}) {
+      EndWay way{{{G.x, G.y, hf}}, hf};
+      if (!g.valid(g.id(way.poses[0])) || !appendRotation(g, way.poses[0], hg, way.poses)) continue;
+      if (r.target_yaw) way.poses.push_back(way.poses.back());  // the step that turns to the yaw
+      out.push_back(std::move(way));
+    }
+  }
+  return out;
+}
+
+/// Every valid way to connect robot `r`, cheapest first (ties in a fixed order). `problem` is set
+/// (with its kind) when an end has no way at all.
+std::vector<Choice> choicesFor(const Robot& r, int index, const StateGraph& g, const GridMap& map, int s,
+                               std::vector<RobotProblem>& problems) {
   std::vector<Choice> out;
   const GridPose S = r.start, G = r.target;
-  if (!g.valid(g.id(S)) || !g.valid(g.id(G))) return out;
-  const int start_headings[] = {S.heading, kRotateCcw[S.heading], kRotateCw[S.heading]};
-  // Headings from which at most one rotation reaches the target's.
-  const int end_headings[] = {G.heading, kRotateCw[G.heading], kRotateCcw[G.heading]};
-  for (int hc : start_headings) {
-    for (int hf : end_headings) {
+  std::string why;
+  const std::vector<EndWay> starts = startWays(r, g, map, why);
+  if (starts.empty()) {
+    problems.push_back({index, -1, RobotProblem::Kind::InvalidStart, robotLabel(r) + ": start " + toString(S) + ": " +
+                                                                       (why.empty() ? "no free state there" : why)});
+    return out;
+  }
+  why.clear();
+  const std::vector<EndWay> targets = targetWays(r, g, map, why);
+  if (targets.empty()) {
+    problems.push_back({index, -1, RobotProblem::Kind::InvalidTarget, robotLabel(r) + ": target " + toString(G) + ": " +
+                                                                        (why.empty() ? "no free state there" : why)});
+    return out;
+  }
+  for (const EndWay& start : starts) {
+    for (const EndWay& target : targets) {
+      const int hc = start.heading, hf = target.heading;
       const Cell dc = kHeadingStep[hc], df = kHeadingStep[hf];
       const bool c_on_x = dc.x != 0, f_on_x = df.x != 0;
       // Lengths (k at the start, kf at the target) that put both ends on one lattice.
@@ -73,17 +168,16 @@ std::vector<Choice> choicesFor(const Robot& r, const StateGraph& g, int s) {
         if (!same_line) continue;
         const int along = c_on_x ? G.x - S.x : G.y - S.y;
         lengths.push_back({mod(along * (c_on_x ? dc.x : dc.y), s), 0});
-        lengths.push_back({0, mod(along * (f_on_x ? df.x : df.y), s)});
+        if (s > 1) lengths.push_back({0, mod(along * (f_on_x ? df.x : df.y), s)});
       }
       for (const auto& [k, kf] : lengths) {
         Choice c;
-        c.prefix = {S};
-        if (!appendRotation(g, S, hc, c.prefix) || !appendMove(g, c.prefix.back(), k, c.prefix)) continue;
-        const Cell back = kHeadingStep[hf];
-        const GridPose L{G.x - kf * back.x, G.y - kf * back.y, hf};
+        c.prefix = start.poses;
+        if (!appendMove(g, c.prefix.back(), k, c.prefix)) continue;
+        const GridPose L{G.x - kf * df.x, G.y - kf * df.y, hf};
         c.suffix = {L};
         if (!g.valid(g.id(L)) || !appendMove(g, L, kf, c.suffix)) continue;
-        if (!appendRotation(g, c.suffix.back(), G.heading, c.suffix)) continue;
+        c.suffix.insert(c.suffix.end(), target.poses.begin() + 1, target.poses.end());
         c.cost = static_cast<int>(c.prefix.size() + c.suffix.size()) - 2;
         out.push_back(std::move(c));
       }
@@ -107,6 +201,7 @@ int clash(const GridMap& map, const Instance& instance, const FleetGraphs& graph
   for (int i = 0; i < n; ++i) {
     Path p = choices[i][chosen[i]].prefix;
     connecting.robots[i].target = p.back();
+    connecting.robots[i].target_yaw.reset();
     p.resize(steps, p.back());
     prefixes.paths.push_back(std::move(p));
   }
@@ -115,6 +210,12 @@ int clash(const GridMap& map, const Instance& instance, const FleetGraphs& graph
     why = v.message;
     return v.other >= 0 ? v.other : v.robot;  // the second robot named tries its next choice
   }
+  // Where each robot ends: its target's body (at its target yaw, if it has one).
+  std::vector<CellSet> final_body(n);
+  for (int j = 0; j < n; ++j) {
+    const Robot& r = instance.robots[j];
+    final_body[j] = r.target_yaw ? footprintCellsAt(r.footprint, *r.target_yaw) : graphs.cells(j).body(r.target.heading);
+  }
   for (int i = 0; i < n; ++i) {
     const GridPose& li = choices[i][chosen[i]].suffix.front();
     for (int j = 0; j < n; ++j) {
@@ -122,7 +223,8 @@ int clash(const GridMap& map, const Instance& instance, const FleetGraphs& graph
       const GridPose& lj = choices[j][chosen[j]].suffix.front();
       const GridPose& gj = instance.robots[j].target;
       const bool on_lattice_target = j > i && footprintsOverlap(graphs.cells(i), li, graphs.cells(j), lj);
-      if (on_lattice_target || footprintsOverlap(graphs.cells(i), li, graphs.cells(j), gj)) {
+      if (on_lattice_target ||
+          CellSet::overlap(graphs.cells(i).body(li.heading), {li.x, li.y}, final_body[j], {gj.x, gj.y})) {
         why = robotLabel(instance.robots[i]) + "'s lattice target " + toString(li) + " overlaps the " +
               (on_lattice_target ? "lattice target " + toString(lj) : "target " + toString(gj)) + " of " +
               robotLabel(instance.robots[j]);
@@ -149,7 +251,11 @@ LatticeInstance connectToLattice(const GridMap& map, const Instance& instance, c
   std::vector<std::vector<Choice>> choices(n);
   std::vector<std::size_t> chosen(n, 0);
   for (int i = 0; i < n; ++i) {
-    choices[i] = choicesFor(instance.robots[i], graphs.graph(i), step);
+    choices[i] = choicesFor(instance.robots[i], i, graphs.graph(i), map, step, out.problems);
+    if (!out.problems.empty()) {
+      out.problem = out.problems.front().reason;
+      return out;
+    }
     if (choices[i].empty()) {
       out.problem = robotLabel(instance.robots[i]) + " cannot reach a lattice of step " + std::to_string(step) +
                     " from its start or its target with one rotation and one short move";
@@ -174,6 +280,8 @@ LatticeInstance connectToLattice(const GridMap& map, const Instance& instance, c
     out.connections[i] = {c.prefix, c.suffix};
     out.instance.robots[i].start = c.prefix.back();
     out.instance.robots[i].target = c.suffix.front();
+    out.instance.robots[i].start_yaw.reset();  // the lattice plan runs between grid poses
+    out.instance.robots[i].target_yaw.reset();
   }
   return out;
 }

@@ -1,43 +1,37 @@
 // Assembling a full plan from a lattice plan and the robots' connections; see lattice.h.
 #include <algorithm>
+#include <memory>
 #include <numeric>
 
+#include "fleet_planner/model/robot_cells.h"
 #include "fleet_planner/planning/lattice.h"
 
 namespace fleet_planner {
 
 namespace {
 
-/// The cells a robot covers going from `from` to `to` in one step (relative to `from`).
-const CellSet& sweepOf(const FootprintCells& cells, const GridPose& from, const GridPose& to) {
-  if (from == to) return cells.body(from.heading);
-  if (from.x == to.x && from.y == to.y) {
-    return cells.swept(from.heading, kRotateCcw[from.heading] == to.heading ? Action::RotateCcw : Action::RotateCw);
-  }
-  const Cell d = kHeadingStep[from.heading];
-  const bool forward = (to.x - from.x) * d.x + (to.y - from.y) * d.y > 0;
-  return cells.moveSwept(from.heading, forward, moveLength(from, to));
-}
-
-const GridPose& at(const Path& p, int t) { return p[std::min<std::size_t>(static_cast<std::size_t>(t), p.size() - 1)]; }
-
-/// Robot a following `pa` and robot b following `pb` meet at some step u >= from (a step's
-/// sweeps overlap; after its path a robot stays at its last pose).
-bool meet(const FootprintCells& ca, const Path& pa, const FootprintCells& cb, const Path& pb, int from) {
+/// Robot a and robot b along their paths meet at some step u >= from (a step's sweeps overlap;
+/// after its path a robot stays at rest).
+bool meet(const RobotCells& a, const Path& pa, const RobotCells& b, const Path& pb, int from, const ActionModel& model) {
   const int end = static_cast<int>(std::max(pa.size(), pb.size()));
   for (int u = std::max(0, from); u < end; ++u) {
-    const GridPose &a0 = at(pa, u), &a1 = at(pa, u + 1), &b0 = at(pb, u), &b1 = at(pb, u + 1);
-    if (CellSet::overlap(sweepOf(ca, a0, a1), {a0.x, a0.y}, sweepOf(cb, b0, b1), {b0.x, b0.y})) return true;
+    const CellSet* sa = a.sweepAt(u, model);
+    const CellSet* sb = b.sweepAt(u, model);
+    if (sa == nullptr || sb == nullptr) return true;  // not a motion: never taken as clear
+    const GridPose &a0 = stateAt(pa, u), &b0 = stateAt(pb, u);
+    if (CellSet::overlap(*sa, {a0.x, a0.y}, *sb, {b0.x, b0.y})) return true;
   }
-  // Both at rest from `end` on.
-  const GridPose &a = pa.back(), &b = pb.back();
-  return CellSet::overlap(ca.body(a.heading), {a.x, a.y}, cb.body(b.heading), {b.x, b.y});
+  const GridPose &a1 = pa.back(), &b1 = pb.back();
+  return CellSet::overlap(a.bodyAt(end), {a1.x, a1.y}, b.bodyAt(end), {b1.x, b1.y});
 }
 
 }  // namespace
 
-std::optional<Plan> assembleLatticePlan(const LatticeInstance& lattice, const FleetGraphs& graphs,
-                                        const Plan& lattice_plan, std::string& problem) {
+std::optional<Plan> assembleLatticePlan(const Instance& instance, const LatticeInstance& lattice,
+                                        const FleetGraphs& graphs, const Plan& lattice_plan, std::string& problem) {
+  const std::vector<Robot>& original = instance.robots;
+  std::vector<Robot> lattice_robots_with_start_yaw = original;
+  for (Robot& r : lattice_robots_with_start_yaw) r.target_yaw.reset();
   const int n = static_cast<int>(lattice.connections.size());
   std::size_t prefix_poses = 1;
   for (const auto& c : lattice.connections) prefix_poses = std::max(prefix_poses, c.prefix.size());
@@ -60,21 +54,29 @@ std::optional<Plan> assembleLatticePlan(const LatticeInstance& lattice, const Fl
   std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return arrival[a] < arrival[b]; });
   int horizon = 0;
   for (const Path& p : paths) horizon = std::max(horizon, static_cast<int>(p.size()));
+  // Each robot as the others see it: until its target's connection is placed it ends on its
+  // lattice target, with no target yaw.
+  const ActionModel model = graphs.graph(0).actionModel();
+  std::vector<Robot> seen = lattice_robots_with_start_yaw;
+  std::vector<std::unique_ptr<RobotCells>> cells(n);
+  for (int j = 0; j < n; ++j) cells[j] = std::make_unique<RobotCells>(seen[j], graphs.cells(j), paths[j]);
   for (int i : order) {
     const Path& suffix = lattice.connections[i].suffix;
     if (suffix.size() == 1) continue;
-    const FootprintCells& ci = graphs.cells(i);
     bool placed = false;
     for (int t = arrival[i]; t <= horizon + static_cast<int>(suffix.size()) && !placed; ++t) {
       Path candidate(paths[i].begin(), paths[i].begin() + arrival[i] + 1);
       candidate.resize(static_cast<std::size_t>(t) + 1, candidate.back());
       candidate.insert(candidate.end(), suffix.begin() + 1, suffix.end());
+      const RobotCells mine(original[i], graphs.cells(i), candidate);
       bool clash = false;
       for (int j = 0; j < n && !clash; ++j) {
-        if (j != i) clash = meet(ci, candidate, graphs.cells(j), paths[j], t);
+        if (j != i) clash = meet(mine, candidate, *cells[j], paths[j], t, model);
       }
       if (clash) continue;
       paths[i] = std::move(candidate);
+      seen[i] = original[i];
+      cells[i] = std::make_unique<RobotCells>(seen[i], graphs.cells(i), paths[i]);
       horizon = std::max(horizon, static_cast<int>(paths[i].size()));
       placed = true;
     }

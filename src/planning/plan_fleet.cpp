@@ -4,6 +4,7 @@
 #include <memory>
 
 #include "fleet_planner/model/plan_validator.h"
+#include "fleet_planner/model/robot_cells.h"
 #include "fleet_planner/planning/lattice.h"
 #include "fleet_planner/runtime/errors.h"
 #include "fleet_planner/runtime/memory_guard.h"
@@ -55,9 +56,16 @@ class LatticeAttempt {
     model.step = step;
     const auto graphs = buildGraphs(model);
     if (!graphs) return true;  // TIMEOUT or RESOURCE_LIMIT while building them
-    if (step == 1) return planOn(instance_, *graphs, nullptr, 1);
+    // Step 1 with every start and target on a grid heading is the paper's model: no connections.
+    bool yaws = false;
+    for (const Robot& r : instance_.robots) yaws = yaws || r.start_yaw || r.target_yaw;
+    if (step == 1 && !yaws) return planOn(instance_, *graphs, nullptr, 1);
     const LatticeInstance lattice = connectToLattice(map_, instance_, *graphs, step);
-    if (!lattice.problem.empty()) return giveUp(step, lattice.problem);
+    if (!lattice.problems.empty()) {  // no lattice can help: a start or target that cannot turn
+      result_.precheck.problems = lattice.problems;
+      return finalFailure(SolveStatus::InvalidInput, precheckReason(result_.precheck));
+    }
+    if (!lattice.problem.empty()) return step > 1 ? giveUp(step, lattice.problem) : finalFailure(SolveStatus::Infeasible, lattice.problem);
     return planOn(lattice.instance, *graphs, &lattice, step);
   }
 
@@ -87,6 +95,12 @@ class LatticeAttempt {
     return graphs;
   }
 
+  bool finalFailure(SolveStatus status, const std::string& why) {
+    result_.status = status;
+    result_.reason = why;
+    return true;
+  }
+
   bool giveUp(int step, const std::string& why) {
     result_.lattice_notes.push_back("step " + std::to_string(step) + ": " + why);
     return false;
@@ -98,7 +112,7 @@ class LatticeAttempt {
     const auto t_check = std::chrono::steady_clock::now();
     SolvabilityReport precheck = checkSolvability(planned, graphs, deadline_);
     if (!precheck.solvable()) {
-      if (lattice) return giveUp(step, precheckReason(precheck));
+      if (lattice && step > 1) return giveUp(step, precheckReason(precheck));
       result_.precheck = std::move(precheck);
       result_.status = SolveStatus::Infeasible;
       result_.reason = precheckReason(result_.precheck);
@@ -115,11 +129,13 @@ class LatticeAttempt {
     result_.graphs_cached = cached;
     result_.lattice_step = step;
     if (!lattice) return true;
-    if (result_.status == SolveStatus::Infeasible) return giveUp(step, "no plan on this lattice: " + result_.reason);
+    if (result_.status == SolveStatus::Infeasible && step > 1) {
+      return giveUp(step, "no plan on this lattice: " + result_.reason);
+    }
     if (!result_.success()) return true;
     std::string problem;
-    std::optional<Plan> full = assembleLatticePlan(*lattice, graphs, result_.plan, problem);
-    if (!full) return giveUp(step, problem);
+    std::optional<Plan> full = assembleLatticePlan(instance_, *lattice, graphs, result_.plan, problem);
+    if (!full) return step > 1 ? giveUp(step, problem) : finalFailure(SolveStatus::Infeasible, problem);
     result_.plan = std::move(*full);
     const ValidationResult check = validatePlan(map_, instance_, result_.plan, graphs.graph(0).actionModel());
     if (!check.valid()) {
@@ -128,9 +144,7 @@ class LatticeAttempt {
                        check.violation.message;
       return true;
     }
-    std::vector<GridPose> targets;
-    for (const auto& r : instance_.robots) targets.push_back(r.target);
-    result_.metrics = planMetrics(result_.plan, targets);
+    result_.metrics = planMetrics(result_.plan, planTargets(instance_, result_.plan));
     return true;
   }
 

@@ -130,10 +130,7 @@ GridPoseFit toGridPose(const GridMap& map, const geometry_msgs::Pose2D& pose, co
     const double d = std::abs(wrapAngle(yaw - kHeadingYaw[h]));
     if (d < best) best = d, fit.pose.heading = h;
   }
-  if (best > tolerance.heading + 1e-9) {
-    fit.error = "yaw " + metres(pose.theta) + " rad is " + metres(best) +
-                " rad from the nearest grid heading; heading_tolerance is " + metres(tolerance.heading) + " rad";
-  }
+  if (best > tolerance.heading + 1e-9) fit.yaw = yaw;  // any yaw: a turn in place connects it
   return fit;
 }
 

@@ -206,7 +206,7 @@ void FleetPlanningService::planChecked(const Request& request, const StartLookup
   Instance instance;
   for (int i = 0; i < n; ++i) {
     instance.robots.push_back({request.tasks[i].robot_id, tasks[i].footprint, tasks[i].start, tasks[i].goal,
-                               "tasks[" + std::to_string(i) + "]"});
+                               "tasks[" + std::to_string(i) + "]", tasks[i].start_yaw, tasks[i].goal_yaw});
   }
   PlanningOptions options = planningOptions(config_);
   options.backend = backend;

@@ -55,6 +55,19 @@ std::string footprintSizeProblem(const Footprint& f, const GridMap& map) {
          ": larger than the map (" + metres(w, res) + " x " + metres(h, res) + ")";
 }
 
+/// Why a robot with `footprint` cannot stand at `pose`'s cell at `yaw` (grid frame): the first
+/// blocked or off-map cell its footprint covers there; empty if it can.
+std::string yawPoseProblem(const GridMap& grid, const Footprint& footprint, const GridPose& pose, double yaw) {
+  for (const Cell& c : footprintCellsAt(footprint, yaw).cells()) {
+    const int x = pose.x + c.x, y = pose.y + c.y;
+    if (grid.blocked(x, y)) {
+      return "at yaw " + std::to_string(yaw).substr(0, 6) + " rad its footprint covers the blocked cell (" +
+             std::to_string(x) + "," + std::to_string(y) + ")";
+    }
+  }
+  return "";
+}
+
 /// Places one task; a problem goes into `result`.
 void placeTask(const fleet_planner::RobotTask& task, const GridMap& grid,
                const std::map<std::string, fleet_planner::RobotFootprint>& registry, const PlannerConfig& config,
@@ -97,13 +110,17 @@ void placeTask(const fleet_planner::RobotTask& task, const GridMap& grid,
       return;
     }
   }
-  auto place = [&](const geometry_msgs::Pose2D& pose, const char* what, std::uint8_t status, GridPose& placed) {
+  auto place = [&](const geometry_msgs::Pose2D& pose, const char* what, std::uint8_t status, GridPose& placed,
+                   std::optional<double>& yaw) {
     const GridPoseFit fit = toGridPose(grid, pose, config.poseTolerance());
     if (!fit.ok()) {
       robotError(status, std::string(what) + " " + fit.error);
       return false;
     }
-    const std::string problem = poseProblem(grid, *cells, fit.pose);
+    yaw = fit.yaw;
+    // At a yaw off the grid headings, the footprint at that yaw must be free.
+    const std::string problem = fit.yaw ? yawPoseProblem(grid, out.footprint, fit.pose, *fit.yaw)
+                                        : poseProblem(grid, *cells, fit.pose);
     if (!problem.empty()) {
       robotError(status, std::string(what) + " " + poseText(pose) + " = grid state " + toString(fit.pose) + ": " +
                              problem);
@@ -112,9 +129,11 @@ void placeTask(const fleet_planner::RobotTask& task, const GridMap& grid,
     placed = fit.pose;
     return true;
   };
-  if (!place(start, "start", RobotResultMsg::INVALID_START, out.start)) return;
-  if (!place(task.goal, "goal", RobotResultMsg::INVALID_GOAL, out.goal)) return;
+  if (!place(start, "start", RobotResultMsg::INVALID_START, out.start, out.start_yaw)) return;
+  if (!place(task.goal, "goal", RobotResultMsg::INVALID_GOAL, out.goal, out.goal_yaw)) return;
   out.placement = {task.robot_id, found->second, toPose2D(grid, out.start), toPose2D(grid, out.goal), -1};
+  if (out.start_yaw) out.placement.start.theta = start.theta;
+  if (out.goal_yaw) out.placement.goal.theta = task.goal.theta;
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 // start (from the request or TF) and goal as grid states, every problem named per robot.
 // Private to the ROS layer (fleet_planning_service.cpp).
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -14,6 +15,7 @@ namespace fleet_planner {
 struct TaskState {
   Footprint footprint;  // cells
   GridPose start, goal;
+  std::optional<double> start_yaw, goal_yaw;  ///< grid frame, when off the grid headings (Robot)
   RobotPlacement placement;
 };
 

@@ -1,5 +1,6 @@
 // `check`: the independent validator on a plan file; `precheck`: the solvability pre-check.
 #include "cli_common.h"
+#include "fleet_planner/model/robot_cells.h"
 #include "fleet_planner/model/fleet_graphs.h"
 #include "fleet_planner/model/instance_check.h"
 #include "fleet_planner/io/plan_io.h"
@@ -61,9 +62,7 @@ void addCheckCommand(CLI::App& app) {
     const ValidationResult result = validatePlan(p.map, p.instance, plan, model);
     nlohmann::json j{{"valid", result.valid()}, {"agents", p.instance.robots.size()}};
     if (result.valid()) {
-      std::vector<GridPose> targets;
-      for (const auto& r : p.instance.robots) targets.push_back(r.target);
-      const PlanMetrics m = planMetrics(plan, targets);
+      const PlanMetrics m = planMetrics(plan, planTargets(p.instance, plan));
       j["soc"] = m.soc;
       j["makespan"] = m.makespan;
     } else {

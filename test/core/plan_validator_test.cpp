@@ -122,6 +122,26 @@ TEST(PlanValidator, LatticeMovesSweepEveryCellOnTheWay) {
             Kind::TransferConflict);
 }
 
+TEST(PlanValidator, TurnsFromAStartYawSweepEveryCellOnTheWay) {
+  // A stick 6 cells long at 45 degrees turns onto heading +x; the cell (13, 11) is touched only
+  // while it turns (its front end passes over it), not at either end.
+  std::vector<std::string> rows(20, std::string(20, '.'));
+  rows[11][13] = '@';
+  Robot stick = robot("stick", Footprint::block(-3.0, -0.2, 3.0, 0.2), {10, 10, 0}, {10, 10, 0});
+  stick.start_yaw = 0.785398;
+  const std::vector<Path> turn = {{{10, 10, 0}, {10, 10, 0}}};
+  EXPECT_EQ(check(mapFromRows(rows), {stick}, turn).kind, Kind::SweepInObstacle);
+  EXPECT_EQ(check(freeMap(20, 20), {stick}, turn).kind, Kind::None);
+  // The turn is a step of its own: a path that moves at once is illegal.
+  EXPECT_EQ(check(freeMap(20, 20), {stick}, {{{10, 10, 0}, {11, 10, 0}}}).kind, Kind::WrongTarget);
+  Robot moving = stick;
+  moving.target = {11, 10, 0};
+  EXPECT_EQ(check(freeMap(20, 20), {moving}, {{{10, 10, 0}, {11, 10, 0}}}).kind, Kind::IllegalAction);
+  // Another robot standing where only the turn passes meets it.
+  const std::vector<Robot> pair = {stick, dot("d", {13, 11, 0}, {13, 11, 0})};
+  EXPECT_EQ(check(freeMap(20, 20), pair, {turn[0], {{13, 11, 0}}}).kind, Kind::TransferConflict);
+}
+
 TEST(PlanValidator, VertexConflict) {
   const GridMap map = freeMap(5, 1);
   const auto v = check(map, {dot("a", {0, 0, 0}, {2, 0, 0}), dot("b", {4, 0, 1}, {3, 0, 1})},

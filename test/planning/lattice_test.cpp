@@ -172,5 +172,46 @@ TEST(Lattice, SameInputSamePlan) {
   EXPECT_EQ(a.plan.paths, b.plan.paths);
 }
 
+TEST(AnyYaw, StartsAndTargetsAtAnyYawAreTurnedFromAndToOnTheLatticeAndOff) {
+  const GridMap map = freeMap(48, 30);
+  Instance instance;
+  instance.robots = {box("a", 7, 5, {8, 8, 0}, {38, 20, 2}), box("b", 6, 4, {38, 8, 1}, {8, 22, 0}),
+                     box("c", 5, 5, {24, 13, 2}, {24, 23, 2})};
+  instance.robots[0].start_yaw = 0.61;
+  instance.robots[0].target_yaw = 2.3;
+  instance.robots[1].start_yaw = -2.9;
+  instance.robots[2].target_yaw = -0.4;
+  for (int step : {1, 3}) {
+    const PlanningResult r = planFleet(map, instance, onLattice(step));
+    ASSERT_TRUE(validOnCells(map, instance, r)) << "step " << step;
+    EXPECT_EQ(r.lattice_step, step);
+    const Path& a = r.plan.paths[0];
+    EXPECT_EQ(a[0], a[1]) << "the first step turns from the start yaw";
+    EXPECT_EQ(a[a.size() - 2], a.back()) << "the last step turns to the target yaw";
+    EXPECT_GT(r.metrics.soc, 0);
+  }
+  // The validator holds those turns to the map: a wall next to the start that only the turn hits.
+}
+
+TEST(AnyYaw, AStartWhoseTurnHitsAWallIsNamedWithTheCell) {
+  // A stick 6 cells long standing at 45 degrees, with a blocked cell where each of the two grid
+  // headings next to its yaw would put its front end: it stands free but can turn to neither.
+  std::vector<std::string> rows(20, std::string(20, '.'));
+  rows[10][13] = '@';  // (13, 10): its front end at heading +x
+  rows[13][10] = '@';  // (10, 13): its front end at heading +y
+  const GridMap map = mapFromRows(rows);
+  Instance instance;
+  instance.robots = {makeRobot("stick", Footprint::block(-3.0, -0.2, 3.0, 0.2), {10, 10, 0}, {4, 4, 0})};
+  instance.robots[0].start_yaw = 0.785398;
+  const PlanningResult r = planFleet(map, instance, onLattice(1));
+  EXPECT_EQ(r.status, SolveStatus::InvalidInput) << r.reason;
+  ASSERT_EQ(r.precheck.problems.size(), 1u) << statusName(r.status) << ": " << r.reason;
+  EXPECT_EQ(r.precheck.problems[0].kind, RobotProblem::Kind::InvalidStart);
+  EXPECT_NE(r.reason.find("'stick'"), std::string::npos) << r.reason;
+  EXPECT_NE(r.reason.find("blocked cell (1"), std::string::npos) << r.reason;
+  // Without the walls it turns and plans.
+  EXPECT_TRUE(validOnCells(freeMap(20, 20), instance, planFleet(freeMap(20, 20), instance, onLattice(1))));
+}
+
 }  // namespace
 }  // namespace fleet_planner::test

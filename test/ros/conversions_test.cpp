@@ -94,7 +94,13 @@ TEST(PoseConversion, SnapsWithinTolerancesAndExplainsOtherwise) {
   EXPECT_EQ(fit.pose.heading, 1);
 
   EXPECT_NE(toGridPose(map, pose(1.45, 0.75, 0), tolerance).error.find("position_tolerance"), std::string::npos);
-  EXPECT_NE(toGridPose(map, pose(1.25, 0.75, 0.7), tolerance).error.find("heading_tolerance"), std::string::npos);
+  // Beyond the heading tolerance a yaw is kept (the plan turns from or to it), on the nearest heading.
+  fit = toGridPose(map, pose(1.25, 0.75, 0.7), tolerance);
+  ASSERT_TRUE(fit.ok()) << fit.error;
+  ASSERT_TRUE(fit.yaw.has_value());
+  EXPECT_NEAR(*fit.yaw, 0.7, 1e-12);
+  EXPECT_EQ(fit.pose.heading, 0);
+  EXPECT_FALSE(toGridPose(map, pose(1.25, 0.75, 0.1), tolerance).yaw.has_value());
   EXPECT_NE(toGridPose(map, pose(5.01, 0.75, 0), tolerance).error.find("off the map"), std::string::npos);
   EXPECT_NE(toGridPose(map, pose(-0.01, 0.75, 0), tolerance).error.find("off the map"), std::string::npos);
   EXPECT_EQ(toGridPose(map, pose(NAN, 0.75, 0), tolerance).error, "x is nan");

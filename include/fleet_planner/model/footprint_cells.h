@@ -59,4 +59,13 @@ class FootprintCells {
   std::size_t hash_ = 0;
 };
 
+/// Cells the footprint covers at any `yaw` (radians), relative to its cell: for starts and
+/// targets off the grid headings.
+CellSet footprintCellsAt(const Footprint& footprint, double yaw);
+
+/// Cells the footprint covers turning in place from `from_yaw` to `to_yaw` the shorter way (at
+/// most half a turn), both end poses included; exact for star-shaped footprints as the grid
+/// rotations are, within the footprint's sweep_tolerance.
+CellSet turnSweep(const Footprint& footprint, double from_yaw, double to_yaw);
+
 }  // namespace fleet_planner

@@ -1,5 +1,6 @@
 #pragma once
 /// An LA-MAPF instance: robots with footprints, start and target states.
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -14,6 +15,12 @@ struct Robot {
   GridPose start;
   GridPose target;
   std::string source;  ///< where it was read ("file:line"), for messages; may be empty
+  /// The yaw (radians, 0 = +x, counter-clockwise) the robot stands at at its start when that is
+  /// not start.heading's: the plan's first step turns it in place onto start.heading.
+  std::optional<double> start_yaw;
+  /// The yaw it must end at when that is not target.heading's: the plan's last step turns it in
+  /// place from target.heading to this yaw (robot_cells.h).
+  std::optional<double> target_yaw;
 };
 
 struct Instance {

@@ -48,6 +48,8 @@ constexpr std::array<int, kHeadings> kRotateCw{{3, 2, 0, 1}};
 constexpr std::array<int, kHeadings> kOpposite{{1, 0, 3, 2}};
 /// Number of quarter turns (counter-clockwise) from +x to each heading.
 constexpr std::array<int, kHeadings> kQuarterTurns{{0, 2, 1, 3}};
+/// The yaw of a heading (radians, 0 = +x, counter-clockwise): 0, pi, pi/2, 3 pi/2.
+constexpr double headingYaw(int heading) { return kQuarterTurns[heading] * 1.5707963267948966; }
 
 /// True for headings 0..3.
 constexpr bool validHeading(int h) { return h >= 0 && h < kHeadings; }

@@ -18,6 +18,7 @@
 #include "fleet_planner/model/fleet_graphs.h"
 #include "fleet_planner/model/grid_map.h"
 #include "fleet_planner/model/instance.h"
+#include "fleet_planner/model/instance_check.h"
 #include "fleet_planner/model/plan.h"
 
 namespace fleet_planner {
@@ -37,6 +38,9 @@ struct LatticeInstance {
   Instance instance;  ///< the robots with their lattice starts and targets
   std::vector<LatticeConnection> connections;
   std::string problem;  ///< why the fleet cannot be put on this lattice (empty: it can)
+  /// A start or target that cannot be connected on any lattice (its turn from or to its yaw hits
+  /// a wall, no free state there): INVALID_START / INVALID_TARGET with the reason and a cell.
+  std::vector<RobotProblem> problems;
 };
 
 /// Chooses each robot's connections on `graphs` (built with ActionModel::step = `step`): the
@@ -44,10 +48,10 @@ struct LatticeInstance {
 /// run together, meet no other robot's.
 LatticeInstance connectToLattice(const GridMap& map, const Instance& instance, const FleetGraphs& graphs, int step);
 
-/// The full plan of `instance`: the starts' connections (all together, padded with waits), the
+/// The full plan of `instance` (the robots as given, yaws included): the starts' connections (all together, padded with waits), the
 /// lattice plan, and each target's connection at its earliest safe step. Nothing if some target's
 /// connection never becomes safe (another robot ends on its way); `problem` says which.
-std::optional<Plan> assembleLatticePlan(const LatticeInstance& lattice, const FleetGraphs& graphs,
-                                        const Plan& lattice_plan, std::string& problem);
+std::optional<Plan> assembleLatticePlan(const Instance& instance, const LatticeInstance& lattice,
+                                        const FleetGraphs& graphs, const Plan& lattice_plan, std::string& problem);
 
 }  // namespace fleet_planner

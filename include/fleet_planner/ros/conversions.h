@@ -5,6 +5,7 @@
 /// Grid frame: cell (x, y) has its lower corner at origin + resolution * (x, y), rotated by the
 /// map's yaw, and the robot's origin sits at the cell's centre. Heading 0 = +x of the grid,
 /// 1 = -x, 2 = +y, 3 = -y, i.e. yaw 0, pi, pi/2, -pi/2 relative to the map's yaw.
+#include <optional>
 #include <string>
 
 #include <fleet_planner/RobotFootprint.h>
@@ -40,7 +41,10 @@ struct PoseTolerance {
 
 /// A map-frame pose snapped to the grid, or why it cannot be.
 struct GridPoseFit {
-  GridPose pose;
+  GridPose pose;  ///< the cell and the nearest grid heading
+  /// The yaw in the grid's frame (radians) when it is more than the heading tolerance from every
+  /// grid heading: the plan turns the robot in place from or to it.
+  std::optional<double> yaw;
   std::string error;  ///< empty on success, e.g. "x is NaN", "(31.0, 2.0) is off the map ..."
   bool ok() const { return error.empty(); }
 };
