@@ -8,6 +8,7 @@
 #include <visualization_msgs/MarkerArray.h>
 
 #include "fleet_planner/ros/marker_builder.h"
+#include "fleet_planner/ros/path_messages.h"
 #include "fleet_planner/ros/plan_playback.h"
 
 namespace fleet_planner {
@@ -148,6 +149,15 @@ void PlannerNode::publish(const PlanCall& call) {
   timelines.seconds_per_step = c.seconds_per_step;
   timelines.timelines = r.timelines;
   timelines_pub_.publish(timelines);
+  // Each robot's plan as a nav_msgs/Path, stamped with its planned times (latched, one topic each).
+  for (const auto& timeline : r.timelines) {
+    auto pub = path_pubs_.find(timeline.robot_id);
+    if (pub == path_pubs_.end()) {
+      pub = path_pubs_.emplace(timeline.robot_id,
+                               private_nh_.advertise<nav_msgs::Path>(planTopicName(timeline.robot_id), 1, true)).first;
+    }
+    pub->second.publish(toPathMessage(timeline, c.map_frame, now, c.seconds_per_step));
+  }
   std::lock_guard<std::mutex> lock(playback_mutex_);
   playing_ = r.timelines;
   playback_start_ = now;

@@ -10,6 +10,7 @@
 #include "fleet_planner/model/instance_check.h"
 #include "fleet_planner/io/instance_io.h"
 #include "fleet_planner/io/map_io.h"
+#include "fleet_planner/io/node_inputs.h"
 
 namespace fleet_planner::cli {
 
@@ -31,7 +32,13 @@ double peakRssMb() {
 
 void addProblemOptions(CLI::App* cmd, ProblemOptions& options) {
   cmd->add_option("--map", options.map, "map: MovingAI .map or map_server .yaml (default: the scenario's map)");
-  cmd->add_option("--instance", options.instance, "instance: benchmark pool .txt or scenario .yaml")->required();
+  cmd->add_option("--instance", options.instance, "instance: benchmark pool .txt or scenario .yaml");
+  cmd->add_option("--fleet", options.fleet,
+                  "instead of --instance: the node's fleet file (footprint registry format, metres), with --tasks "
+                  "and --map");
+  cmd->add_option("--tasks", options.tasks,
+                  "instead of --instance: the demo client's tasks file (poses [x, y, yaw] in the map frame, any "
+                  "yaw), with --fleet and --map");
   cmd->add_option("--agents", options.agents, "use the 'K mixed' robots of the pool (0 = all)")
       ->check(CLI::NonNegativeNumber);
   cmd->add_flag("--unknown-free", options.unknown_is_free, "map_server maps: unknown cells are free");
@@ -66,6 +73,21 @@ void applyBackendOptions(PlanningOptions& options, const std::vector<std::string
 }
 
 Problem loadProblem(const ProblemOptions& options) {
+  const bool node_inputs = !options.fleet.empty() || !options.tasks.empty();
+  if (node_inputs == !options.instance.empty() || (node_inputs && (options.fleet.empty() || options.tasks.empty()))) {
+    throw InvalidInput("give --instance, or --fleet and --tasks (with --map)");
+  }
+  if (node_inputs) {
+    if (options.map.empty()) throw InvalidInput("--fleet and --tasks need --map (a map_server .yaml)");
+    MapServerOptions map_options;
+    map_options.unknown_is_free = options.unknown_is_free;
+    map_options.limits = options.limits;
+    GridMap map = loadMap(options.map, map_options);
+    Instance instance = loadFleetTasks(map, options.fleet, options.tasks);
+    for (Robot& robot : instance.robots) robot.footprint.sweep_tolerance = options.sweep_tolerance;
+    checkRobotCount(static_cast<long long>(instance.robots.size()), options.limits);
+    return {std::move(map), std::move(instance)};
+  }
   Instance instance = loadInstance(options.instance);
   const std::string map_path = options.map.empty() ? instance.map_file : options.map;
   if (map_path.empty()) {

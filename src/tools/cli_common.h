@@ -25,13 +25,16 @@ double peakRssMb();
 struct ProblemOptions {
   std::string map;       ///< MovingAI .map or map_server .yaml; empty: the scenario's map
   std::string instance;  ///< benchmark .txt or scenario .yaml
+  std::string fleet;     ///< the node's inputs instead: a fleet file (the footprint registry's) ...
+  std::string tasks;     ///< ... and a tasks file (the demo client's), with --map
   int agents = 0;        ///< 0: every robot; K: the "K mixed" robots of the pool
   bool unknown_is_free = false;
   double sweep_tolerance = 0.0;  ///< set on every robot's footprint (Footprint::sweep_tolerance)
   ResourceLimits limits;  ///< max_map_cells and max_robots are checked by loadProblem
 };
 
-/// Registers --map, --instance, --agents, --unknown-free and --sweep-tolerance on `cmd`.
+/// Registers --map, --instance (or --fleet and --tasks), --agents, --unknown-free and
+/// --sweep-tolerance on `cmd`.
 void addProblemOptions(CLI::App* cmd, ProblemOptions& options);
 
 /// Registers --max-map-cells, --max-robots and --max-memory-mb on `cmd` (resource_limits.h).

@@ -12,6 +12,7 @@
 
 #include "fleet_planner/runtime/errors.h"
 #include "fleet_planner/io/map_io.h"
+#include "fleet_planner/io/node_inputs.h"
 #include "test_paths.h"
 
 namespace fleet_planner {
@@ -375,6 +376,49 @@ TEST(SharedBenchmarkIo, EveryMapAndPoolLoadsWithTheReadmeSizes) {
       EXPECT_FALSE(map.blocked(robot.start.x, robot.start.y)) << robot.source;
       EXPECT_FALSE(map.blocked(robot.target.x, robot.target.y)) << robot.source;
     }
+  }
+}
+
+}  // namespace
+}  // namespace fleet_planner
+
+namespace fleet_planner {
+namespace {
+
+// The node's own inputs (the demo's map, fleet and tasks files) as an instance, and bad ones named.
+TEST(NodeInputs, TheDemoFleetAndTasksBecomeAnInstanceOnTheMap) {
+  const std::string root = std::string(FLEET_PLANNER_TEST_DATA) + "/../../";
+  const GridMap map = loadMap(root + "maps/warehouse.yaml");
+  const Instance instance = loadFleetTasks(map, root + "config/demo_fleet.yaml", root + "config/demo_tasks.yaml");
+  ASSERT_EQ(instance.robots.size(), 10u);
+  EXPECT_EQ(instance.robots[0].id, "amr_4");
+  // amr_4: robot_radius 0.35 m on 0.2 m cells; start [4.1, 1.7, 0] is the centre of cell (20, 8).
+  EXPECT_NEAR(instance.robots[0].footprint.radius, 1.75, 1e-9);
+  EXPECT_EQ(instance.robots[0].start, (GridPose{20, 8, 0}));
+  EXPECT_FALSE(instance.robots[0].start_yaw.has_value());
+  EXPECT_EQ(instance.robots[0].target.heading, 1);  // yaw pi: -x
+}
+
+TEST(NodeInputs, AnyYawIsKeptAndBadTasksAreNamed) {
+  const std::string root = std::string(FLEET_PLANNER_TEST_DATA) + "/../../";
+  const GridMap map = loadMap(root + "maps/warehouse.yaml");
+  const std::string dir = ::testing::TempDir();
+  auto write = [&](const std::string& name, const std::string& text) {
+    std::ofstream(dir + name) << text;
+    return dir + name;
+  };
+  const std::string fleet = write("fleet.yaml", "robots:\n  - id: a\n    robot_radius: 0.3\n    footprint_padding: 0.1\n");
+  Instance one = loadFleetTasks(map, fleet, write("tasks.yaml", "tasks:\n  - id: a\n    start: [4.1, 1.7, 0.7]\n    goal: [4.1, 4.1, 0.1]\n"));
+  ASSERT_TRUE(one.robots[0].start_yaw.has_value());
+  EXPECT_NEAR(*one.robots[0].start_yaw, 0.7, 1e-12);
+  EXPECT_FALSE(one.robots[0].target_yaw.has_value());  // within heading_tolerance
+  EXPECT_NEAR(one.robots[0].footprint.radius, 2.0, 1e-9);  // (0.3 + 0.1) / 0.2
+  try {
+    loadFleetTasks(map, fleet, write("bad.yaml", "tasks:\n  - id: a\n    start: [4.1, 1.7, 0]\n    goal: [4.1, 4.1, 0]\n  - id: ghost\n    start: [1, 1, 0]\n    goal: [2, 2, 0]\n"));
+    FAIL() << "a task for a robot the fleet lacks was accepted";
+  } catch (const ParseError& e) {
+    EXPECT_EQ(e.line(), 5) << e.what();
+    EXPECT_NE(std::string(e.what()).find("'ghost'"), std::string::npos) << e.what();
   }
 }
 

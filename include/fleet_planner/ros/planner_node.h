@@ -17,6 +17,9 @@
 #include <fleet_planner/FleetTimelines.h>
 #include <fleet_planner/PlanFleet.h>
 #include <nav_msgs/OccupancyGrid.h>
+#include <map>
+#include <string>
+
 #include <ros/callback_queue.h>
 #include <ros/ros.h>
 #include <tf2_ros/buffer.h>
@@ -56,6 +59,7 @@ class PlannerNode {
   ros::Subscriber map_sub_, fleet_sub_;
   ros::ServiceServer plan_server_;
   ros::Publisher timelines_pub_, markers_pub_;
+  std::map<std::string, ros::Publisher> path_pubs_;  ///< ~plans/<robot_id>, latched, by robot id
   ros::Timer playback_timer_;
 
   std::mutex playback_mutex_;  ///< guards the two below

@@ -1,0 +1,19 @@
+#pragma once
+/// A robot's planned timeline as a nav_msgs/Path: one pose per plan step, in the map frame,
+/// stamped with the time it is planned for (the plan's start plus step x seconds_per_step), for
+/// the node's latched ~plans/<robot_id> topics and any consumer that follows a path in time.
+#include <string>
+
+#include <fleet_planner/RobotTimeline.h>
+#include <nav_msgs/Path.h>
+
+namespace fleet_planner {
+
+nav_msgs::Path toPathMessage(const fleet_planner::RobotTimeline& timeline, const std::string& frame,
+                             const ros::Time& start, double seconds_per_step);
+
+/// The topic name of a robot's path under the node's namespace: "plans/<robot_id>", with every
+/// character a ROS name does not allow replaced by '_' (ids from the registry may hold any).
+std::string planTopicName(const std::string& robot_id);
+
+}  // namespace fleet_planner
