@@ -53,35 +53,40 @@ bool anyTriangleCovers(const std::vector<Polygon>& triangles, const Vec2& c, dou
   return false;
 }
 
-// Cells swept by the polygon (at `heading`) turning 90 degrees, counter-clockwise if ccw.
-// The sweep of a star-shaped set is both end poses plus, for every vertex, the sector its
-// radius sweeps: the farthest point of any ray lies on an edge whose maximum is at a vertex.
-// A cell counts when the sweep reaches more than `tolerance` into it (the cell shrunk by
-// `tolerance` on every side); the caller adds both end poses exactly.
-CellSet rotationSweep(const Polygon& outline, int heading, bool ccw, double reach, double tolerance) {
+// Cells swept by the polygon `first` turning in place by `turn` radians (counter-clockwise when
+// positive) to `last`. The sweep of a star-shaped set is both end poses plus, for every vertex,
+// the sector its radius sweeps: the farthest point of any ray lies on an edge whose maximum is at
+// a vertex. A cell counts when the sweep reaches more than `tolerance` into it (the cell shrunk
+// by `tolerance` on every side); the caller adds both end poses exactly.
+CellSet sectorSweep(const Polygon& first, const Polygon& last, double turn, double reach, double tolerance) {
   const double half = 0.5 - tolerance;
-  const Polygon start = rotated(outline, heading);
-  const int end_heading = ccw ? kRotateCcw[heading] : kRotateCw[heading];
-  const auto hull_start = starHull(start);
-  const auto hull_end = starHull(rotated(outline, end_heading));
+  const auto hull_first = starHull(first);
+  const auto hull_last = starHull(last);
   struct Sector {
     double r, a0, a1;
   };
   std::vector<Sector> sectors;
-  for (const Vec2& v : start) {
+  for (const Vec2& v : first) {
     const double r = v.norm();
     if (r < geometry::kEps) continue;
     const double a = std::atan2(v.y(), v.x());
-    sectors.push_back(ccw ? Sector{r, a, a + geometry::kPi / 2} : Sector{r, a - geometry::kPi / 2, a});
+    sectors.push_back(turn >= 0 ? Sector{r, a, a + turn} : Sector{r, a + turn, a});
   }
   return cellsWhere(reach, [&](const Vec2& c) {
-    if (geometry::squareOverlapsPolygon(c, start, half)) return true;
-    if (anyTriangleCovers(hull_start, c, half) || anyTriangleCovers(hull_end, c, half)) return true;
+    if (geometry::squareOverlapsPolygon(c, first, half)) return true;
+    if (anyTriangleCovers(hull_first, c, half) || anyTriangleCovers(hull_last, c, half)) return true;
     for (const auto& s : sectors) {
       if (geometry::squareOverlapsSector(c, s.r, s.a0, s.a1, half)) return true;
     }
     return false;
   });
+}
+
+// Cells swept by the polygon (at `heading`) turning 90 degrees, counter-clockwise if ccw.
+CellSet rotationSweep(const Polygon& outline, int heading, bool ccw, double reach, double tolerance) {
+  const int end_heading = ccw ? kRotateCcw[heading] : kRotateCw[heading];
+  return sectorSweep(rotated(outline, heading), rotated(outline, end_heading),
+                     ccw ? geometry::kPi / 2 : -geometry::kPi / 2, reach, tolerance);
 }
 
 Polygon rotatedBy(const Polygon& polygon, double yaw) {
@@ -172,28 +177,10 @@ CellSet footprintCellsAt(const Footprint& footprint, double yaw) {
 CellSet turnSweep(const Footprint& footprint, double from_yaw, double to_yaw) {
   const CellSet start = footprintCellsAt(footprint, from_yaw), end = footprintCellsAt(footprint, to_yaw);
   if (footprint.kind == Footprint::Kind::Circle) return start;
-  double turn = std::remainder(to_yaw - from_yaw, 2 * geometry::kPi);  // in [-pi, pi]
-  const double reach = footprint.circumscribedRadius();
-  const double half = 0.5 - footprint.sweep_tolerance;
-  const Polygon first = rotatedBy(footprint.outline(), from_yaw);
-  const auto hull_first = starHull(first), hull_last = starHull(rotatedBy(footprint.outline(), from_yaw + turn));
-  struct Sector {
-    double r, a0, a1;
-  };
-  std::vector<Sector> sectors;
-  for (const Vec2& v : first) {
-    const double r = v.norm();
-    if (r < geometry::kEps) continue;
-    const double a = std::atan2(v.y(), v.x());
-    sectors.push_back(turn >= 0 ? Sector{r, a, a + turn} : Sector{r, a + turn, a});
-  }
-  const CellSet swept = cellsWhere(reach, [&](const Vec2& c) {
-    if (anyTriangleCovers(hull_first, c, half) || anyTriangleCovers(hull_last, c, half)) return true;
-    for (const auto& s : sectors) {
-      if (geometry::squareOverlapsSector(c, s.r, s.a0, s.a1, half)) return true;
-    }
-    return false;
-  });
+  const double turn = std::remainder(to_yaw - from_yaw, 2 * geometry::kPi);  // in [-pi, pi]
+  const CellSet swept = sectorSweep(rotatedBy(footprint.outline(), from_yaw),
+                                    rotatedBy(footprint.outline(), from_yaw + turn), turn,
+                                    footprint.circumscribedRadius(), footprint.sweep_tolerance);
   return swept.unionWith(start, {0, 0}).unionWith(end, {0, 0});
 }
 

@@ -79,6 +79,25 @@ struct EndWay {
   int heading;
 };
 
+/// The grid headings at `at`'s cell that a turn in place from (or, `to_yaw`, to) `yaw` can reach
+/// or leave without touching a blocked cell, nearest first; with none, `why` names a blocked cell.
+std::vector<int> turnableHeadings(const Robot& r, const StateGraph& g, const GridMap& map, const GridPose& at,
+                                  double yaw, bool to_yaw, std::string& why) {
+  std::vector<int> out;
+  for (int h : headingsAround(yaw)) {
+    const GridPose on{at.x, at.y, h};
+    const CellSet sweep = to_yaw ? turnSweep(r.footprint, headingYaw(h), yaw) : turnSweep(r.footprint, yaw, headingYaw(h));
+    const std::string hit = blockedCell(map, sweep, on);
+    if (hit.empty() && g.valid(g.id(on))) {
+      out.push_back(h);
+    } else if (why.empty()) {
+      why = std::string("turning in place ") + (to_yaw ? "to its target yaw" : "from its start yaw") +
+            " covers the blocked cell " + (hit.empty() ? toString(on) : hit);
+    }
+  }
+  return out;
+}
+
 /// The start's ways: a turn from the start yaw onto a heading near it (a step of its own), if any,
 /// then at most one quarter turn. Empty, with `why`, if the start cannot turn at all.
 std::vector<EndWay> startWays(const Robot& r, const StateGraph& g, const GridMap& map, std::string& why) {
@@ -86,12 +105,7 @@ std::vector<EndWay> startWays(const Robot& r, const StateGraph& g, const GridMap
   std::vector<EndWay> out;
   std::vector<Path> bases;
   if (r.start_yaw) {
-    for (int h : headingsAround(*r.start_yaw)) {
-      const GridPose on{S.x, S.y, h};
-      const std::string hit = blockedCell(map, turnSweep(r.footprint, *r.start_yaw, headingYaw(h)), on);
-      if (hit.empty() && g.valid(g.id(on))) bases.push_back({on, on});
-      else if (why.empty()) why = "turning in place from its start yaw covers the blocked cell " + (hit.empty() ? toString(on) : hit);
-    }
+    for (int h : turnableHeadings(r, g, map, S, *r.start_yaw, false, why)) bases.push_back({{S.x, S.y, h}, {S.x, S.y, h}});
   } else {
     bases.push_back({S});
   }
@@ -110,17 +124,8 @@ std::vector<EndWay> startWays(const Robot& r, const StateGraph& g, const GridMap
 std::vector<EndWay> targetWays(const Robot& r, const StateGraph& g, const GridMap& map, std::string& why) {
   const GridPose& G = r.target;
   std::vector<EndWay> out;
-  std::vector<int> finals;
-  if (r.target_yaw) {
-    for (int h : headingsAround(*r.target_yaw)) {
-      const GridPose on{G.x, G.y, h};
-      const std::string hit = blockedCell(map, turnSweep(r.footprint, headingYaw(h), *r.target_yaw), on);
-      if (hit.empty() && g.valid(g.id(on))) finals.push_back(h);
-      else if (why.empty()) why = "turning in place to its target yaw covers the blocked cell " + (hit.empty() ? toString(on) : hit);
-    }
-  } else {
-    finals.push_back(G.heading);
-  }
+  const std::vector<int> finals =
+      r.target_yaw ? turnableHeadings(r, g, map, G, *r.target_yaw, true, why) : std::vector<int>{G.heading};
   for (int hg : finals) {
     for (int hf : {hg, kRotateCw[hg], kRotateCcw[hg]}) {
       EndWay way{{{G.x, G.y, hf}}, hf};
