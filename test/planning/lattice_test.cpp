@@ -190,7 +190,6 @@ TEST(AnyYaw, StartsAndTargetsAtAnyYawAreTurnedFromAndToOnTheLatticeAndOff) {
     EXPECT_EQ(a[a.size() - 2], a.back()) << "the last step turns to the target yaw";
     EXPECT_GT(r.metrics.soc, 0);
   }
-  // The validator holds those turns to the map: a wall next to the start that only the turn hits.
 }
 
 TEST(AnyYaw, AStartWhoseTurnHitsAWallIsNamedWithTheCell) {

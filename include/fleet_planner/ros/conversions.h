@@ -58,8 +58,9 @@ constexpr double kMaxAbsYaw = 1e6;
 /// "theta 1e+20 rad is not an angle (|theta| must be at most 1e+06 rad)"; empty if usable.
 std::string poseValueProblem(const geometry_msgs::Pose2D& pose);
 
-/// The grid state nearest to `pose`; an error if poseValueProblem() finds one, the point is off
-/// the map, or it is farther than the tolerances from that state.
+/// The grid state nearest to `pose` (its cell, the nearest heading, and the yaw itself when it is
+/// beyond the heading tolerance); an error if poseValueProblem() finds one, the point is off the
+/// map, or it is farther than the position tolerance from the cell centre.
 GridPoseFit toGridPose(const GridMap& map, const geometry_msgs::Pose2D& pose, const PoseTolerance& tolerance);
 
 /// The map-frame pose of a grid state (the centre of its cell, its heading's yaw).

@@ -44,7 +44,7 @@ struct PlannerConfig {
   int occupied_threshold = 65;   ///< occupancy values >= this are obstacles (1..100)
   std::string unknown_policy = "obstacle";  ///< unknown cells (-1): "obstacle" or "free"
   double position_tolerance = 0.1;  ///< metres a pose may be from its cell centre
-  double heading_tolerance = 0.2;   ///< radians a yaw may be from a grid heading
+  double heading_tolerance = 0.2;   ///< radians within which a yaw counts as a grid heading
   /// Cells a rotation may clip beyond its end poses, 0..0.25 (Footprint::sweep_tolerance);
   /// 0 is the exact sweep.
   double sweep_tolerance = 0.0;
