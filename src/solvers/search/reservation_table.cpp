@@ -10,10 +10,8 @@ namespace fleet_planner {
 ReservationTable::ReservationTable(int width, int height, const std::vector<MovingObstacle>& moving,
                                    const FleetGraphs& graphs, const ActionModel& model)
     : width_(width), height_(height) {
-  struct Entry {
-    std::int32_t cell;
-    Interval interval;
-  };
+  blocks_x_ = (width + kBlock - 1) / kBlock;
+  blocks_y_ = (height + kBlock - 1) / kBlock;
   std::vector<Entry> entries;
   auto reserve = [&](const CellSet& set, const GridPose& at, int first, int last) {
     for (const auto& run : set.runs()) {
@@ -46,49 +44,94 @@ ReservationTable::ReservationTable(int width, int height, const std::vector<Movi
     reserve(cells.body(m.path.back().heading), m.path.back(), end, kForever);
     last_change_ = std::max(last_change_, end);
   }
-  std::sort(entries.begin(), entries.end(), [](const Entry& a, const Entry& b) {
-    return a.cell != b.cell ? a.cell < b.cell : a.interval.first < b.interval.first;
-  });
-  offsets_.assign(static_cast<std::size_t>(width_) * height_ + 1, 0);
-  for (std::size_t i = 0; i < entries.size();) {
-    const std::int32_t cell = entries[i].cell;
-    Interval current = entries[i].interval;
-    for (++i; i < entries.size() && entries[i].cell == cell; ++i) {
-      const Interval& next = entries[i].interval;
-      if (current.last != kForever && next.first <= current.last + 1) {
-        current.last = std::max(current.last, next.last);
-      } else if (current.last == kForever) {
-        continue;  // already held forever
-      } else {
-        intervals_.push_back(current);
-        ++offsets_[cell + 1];
-        current = next;
-      }
-    }
-    intervals_.push_back(current);
-    ++offsets_[cell + 1];
+  std::vector<Entry> block_entries;
+  block_entries.reserve(entries.size());
+  for (const Entry& e : entries) {
+    const int x = e.key % width_, y = e.key / width_;
+    block_entries.push_back({(y / kBlock) * blocks_x_ + x / kBlock, e.interval});
   }
-  for (std::size_t c = 1; c < offsets_.size(); ++c) offsets_[c] += offsets_[c - 1];
+  buildLists(entries, static_cast<std::size_t>(width_) * height_, offsets_, intervals_);
+  buildLists(block_entries, static_cast<std::size_t>(blocks_x_) * blocks_y_, block_offsets_, block_intervals_);
 }
 
-bool ReservationTable::taken(int x, int y, int t) const {
-  if (intervals_.empty() || x < 0 || y < 0 || x >= width_ || y >= height_) return false;
-  const std::int32_t cell = y * width_ + x;
-  const auto begin = intervals_.begin() + offsets_[cell];
-  const auto end = intervals_.begin() + offsets_[cell + 1];
+void ReservationTable::buildLists(std::vector<Entry>& entries, std::size_t keys, std::vector<std::int32_t>& offsets,
+                                  std::vector<Interval>& intervals) {
+  // Bucket the entries by key (counting sort: a global sort of a million entries was most of the
+  // table's cost), then order each key's few intervals by their first step and merge them.
+  std::vector<std::int32_t> start(keys + 1, 0);
+  for (const Entry& e : entries) ++start[e.key + 1];
+  for (std::size_t k = 1; k <= keys; ++k) start[k] += start[k - 1];
+  std::vector<Interval> bucketed(entries.size());
+  {
+    std::vector<std::int32_t> next(start.begin(), start.end() - 1);
+    for (const Entry& e : entries) bucketed[next[e.key]++] = e.interval;
+  }
+  offsets.assign(keys + 1, 0);
+  intervals.clear();
+  for (std::size_t key = 0; key < keys; ++key) {
+    Interval* begin = bucketed.data() + start[key];
+    Interval* end = bucketed.data() + start[key + 1];
+    if (begin == end) continue;
+    std::sort(begin, end, [](const Interval& a, const Interval& b) { return a.first < b.first; });
+    Interval current = *begin;
+    for (const Interval* next = begin + 1; next != end; ++next) {
+      if (current.last == kForever) break;  // already held forever
+      if (next->first <= current.last + 1) {
+        current.last = next->last == kForever ? kForever : std::max(current.last, next->last);
+      } else {
+        intervals.push_back(current);
+        ++offsets[key + 1];
+        current = *next;
+      }
+    }
+    intervals.push_back(current);
+    ++offsets[key + 1];
+  }
+  for (std::size_t k = 1; k < offsets.size(); ++k) offsets[k] += offsets[k - 1];
+}
+
+bool ReservationTable::contains(const Interval* begin, const Interval* end, int t) {
   if (begin == end) return false;
   // The last interval starting at or before t.
-  auto it = std::upper_bound(begin, end, t, [](int v, const Interval& in) { return v < in.first; });
+  const Interval* it = std::upper_bound(begin, end, t, [](int v, const Interval& in) { return v < in.first; });
   if (it == begin) return false;
   --it;
   return it->last == kForever || t <= it->last;
 }
 
+bool ReservationTable::taken(int x, int y, int t) const {
+  if (intervals_.empty() || x < 0 || y < 0 || x >= width_ || y >= height_) return false;
+  const std::int32_t cell = y * width_ + x;
+  return contains(intervals_.data() + offsets_[cell], intervals_.data() + offsets_[cell + 1], t);
+}
+
 bool ReservationTable::taken(const CellSet& set, Cell origin, int t) const {
-  if (intervals_.empty()) return false;
+  if (intervals_.empty() || set.empty()) return false;
+  // The blocks under the set's bounding box, clipped to the map: if none is taken at t, no cell is.
+  const int x0 = std::max(0, origin.x + set.minX()), x1 = std::min(width_ - 1, origin.x + set.maxX());
+  const int y0 = std::max(0, origin.y + set.minY()), y1 = std::min(height_ - 1, origin.y + set.maxY());
+  if (x0 > x1 || y0 > y1) return false;
+  for (int by = y0 / kBlock; by <= y1 / kBlock; ++by) {
+    for (int bx = x0 / kBlock; bx <= x1 / kBlock; ++bx) {
+      const std::int32_t b = by * blocks_x_ + bx;
+      if (contains(block_intervals_.data() + block_offsets_[b], block_intervals_.data() + block_offsets_[b + 1], t)) {
+        return cellsTaken(set, origin, t);
+      }
+    }
+  }
+  return false;
+}
+
+bool ReservationTable::cellsTaken(const CellSet& set, Cell origin, int t) const {
   for (const auto& run : set.runs()) {
-    for (int x = run.x0; x <= run.x1; ++x) {
-      if (taken(origin.x + x, origin.y + run.dy, t)) return true;
+    const int y = origin.y + run.dy;
+    if (y < 0 || y >= height_) continue;
+    const int x0 = std::max(0, origin.x + run.x0), x1 = std::min(width_ - 1, origin.x + run.x1);
+    const std::int32_t* offset = offsets_.data() + static_cast<std::size_t>(y) * width_;
+    for (int x = x0; x <= x1; ++x) {
+      if (offset[x] != offset[x + 1] && contains(intervals_.data() + offset[x], intervals_.data() + offset[x + 1], t)) {
+        return true;
+      }
     }
   }
   return false;

@@ -2,7 +2,10 @@
 /// Cells taken by moving obstacles over time, for serial backends. Step t is the move from time
 /// t to t + 1; a robot holds the cells it sweeps during each step, and after its path ends the
 /// cells of its last footprint for every later step. One sorted list of step intervals per cell,
-/// stored flat (CSR) so that a cell without reservations costs one comparison.
+/// stored flat (CSR) so that a cell without reservations costs one comparison. The same lists per
+/// block of kBlock x kBlock cells (the union of its cells' intervals) answer "is any cell of this
+/// set taken?" exactly for the many queries of a large footprint far from every moving obstacle:
+/// cells are looked at only when a block the set touches is taken at that step.
 #include <cstdint>
 #include <limits>
 #include <vector>
@@ -35,14 +38,30 @@ class ReservationTable {
   int lastChange() const { return last_change_; }
 
  private:
+  static constexpr int kBlock = 8;
   struct Interval {
     int first;
     int last;  // inclusive; kForever for "from first on"
   };
+  struct Entry {
+    std::int32_t key;  // a cell or a block
+    Interval interval;
+  };
+  /// Sorts and merges `entries` into per-key sorted disjoint interval lists (CSR over `keys`).
+  static void buildLists(std::vector<Entry>& entries, std::size_t keys, std::vector<std::int32_t>& offsets,
+                         std::vector<Interval>& intervals);
+  /// Some interval of the list [begin, end) contains t.
+  static bool contains(const Interval* begin, const Interval* end, int t);
+  bool cellsTaken(const CellSet& set, Cell origin, int t) const;
+
   int width_ = 0;
   int height_ = 0;
+  int blocks_x_ = 0;
+  int blocks_y_ = 0;
   std::vector<std::int32_t> offsets_;  // per cell, into intervals_
   std::vector<Interval> intervals_;
+  std::vector<std::int32_t> block_offsets_;  // per block, into block_intervals_
+  std::vector<Interval> block_intervals_;
   int last_change_ = -1;
 };
 
