@@ -156,10 +156,15 @@ FootprintCells::FootprintCells(const Footprint& footprint, int step) : footprint
   }
 }
 
-CellSet footprintCellsAt(const Footprint& footprint, double yaw) {
-  const double reach = footprint.circumscribedRadius();
+CellSet footprintCellsAt(const Footprint& footprint, double yaw) { return footprintCellsAt(footprint, yaw, Vec2(0, 0)); }
+
+CellSet footprintCellsAt(const Footprint& footprint, double yaw, const Vec2& offset) {
+  // A cell (dx, dy) is the unit square centred there; relative to the robot's origin its centre
+  // is (dx, dy) - offset.
+  const double reach = footprint.circumscribedRadius() + offset.cwiseAbs().maxCoeff();
   if (footprint.kind == Footprint::Kind::Circle) {
-    return cellsWhere(reach, [&](const Vec2& c) { return geometry::squareOverlapsDisc(c, reach); });
+    const double r = footprint.circumscribedRadius();
+    return cellsWhere(reach, [&](const Vec2& c) { return geometry::squareOverlapsDisc(c - offset, r); });
   }
   // A grid heading's yaw gives exactly the grid heading's cells (no rounding at cell borders).
   const double quarters = yaw / (geometry::kPi / 2);
@@ -171,7 +176,7 @@ CellSet footprintCellsAt(const Footprint& footprint, double yaw) {
     for (const Vec2& p : footprint.outline()) quarter.push_back(geometry::rotateQuarter(p, q));
   }
   const Polygon& shape = on_grid ? quarter : poly;
-  return cellsWhere(reach, [&](const Vec2& c) { return geometry::squareOverlapsPolygon(c, shape); });
+  return cellsWhere(reach, [&](const Vec2& c) { return geometry::squareOverlapsPolygon(c - offset, shape); });
 }
 
 CellSet turnSweep(const Footprint& footprint, double from_yaw, double to_yaw) {

@@ -165,6 +165,30 @@ TEST(FootprintCells, SweepToleranceMustBeSmall) {
   }
 }
 
+TEST(FootprintCells, OffsetPosesLieWithinTheMoveTheyAreOn) {
+  // A robot between two cells, as a pose from TF puts it, covers only cells of the move's sweep
+  // between them: the execution monitor relies on it to call overlaps of robots on time safe.
+  const Footprint shapes[] = {Footprint::circle(2.7), Footprint::block(-3.2, -1.9, 4.1, 1.9),
+                              Footprint::polygon({{-2.5, -2.5}, {3.4, 0.0}, {-2.5, 2.5}})};
+  for (const Footprint& f : shapes) {
+    const FootprintCells cells(f);
+    for (int h = 0; h < kHeadings; ++h) {
+      const double yaw = std::atan2(h == 2 ? 1.0 : h == 3 ? -1.0 : 0.0, h == 1 ? -1.0 : h == 0 ? 1.0 : 0.0);
+      EXPECT_EQ(asList(footprintCellsAt(f, yaw, Eigen::Vector2d(0, 0))), asList(cells.body(h)));
+      const Cell ahead = {h == 0 ? 1 : h == 1 ? -1 : 0, h == 2 ? 1 : h == 3 ? -1 : 0};
+      const CellList sweep = asList(cells.swept(h, Action::Forward));
+      for (double f_on : {0.1, 0.25, 0.5}) {
+        const Eigen::Vector2d offset(ahead.x * f_on, ahead.y * f_on);
+        const CellList at = asList(footprintCellsAt(f, yaw, offset));
+        EXPECT_TRUE(std::includes(sweep.begin(), sweep.end(), at.begin(), at.end())) << h << " " << f_on;
+      }
+    }
+  }
+  // The offset counts: the block's front edge at 4.1 + 0.5 cells enters cell 5.
+  EXPECT_TRUE(asList(footprintCellsAt(shapes[1], 0.0, Eigen::Vector2d(0.5, 0))).count({5, 0}));
+  EXPECT_FALSE(asList(footprintCellsAt(shapes[1], 0.0, Eigen::Vector2d(0, 0))).count({5, 0}));
+}
+
 TEST(FootprintCells, SameCellsForCirclesThatDiscretiseAlike) {
   EXPECT_TRUE(FootprintCells(Footprint::circle(0.8)).sameCells(FootprintCells(Footprint::circle(1.4))));
   EXPECT_FALSE(FootprintCells(Footprint::circle(0.8)).sameCells(FootprintCells(Footprint::circle(1.6))));

@@ -62,6 +62,9 @@ class FootprintCells {
 /// Cells the footprint covers at any `yaw` (radians), relative to its cell: for starts and
 /// targets off the grid headings.
 CellSet footprintCellsAt(const Footprint& footprint, double yaw);
+/// Same with the footprint's origin `offset` cells from the centre of the cell it stands on (a
+/// robot between cells, as a pose from TF puts it; |offset| up to half a cell on each axis).
+CellSet footprintCellsAt(const Footprint& footprint, double yaw, const Eigen::Vector2d& offset);
 
 /// Cells the footprint covers turning in place from `from_yaw` to `to_yaw` the shorter way (at
 /// most half a turn), both end poses included; exact for star-shaped footprints as the grid
