@@ -63,8 +63,10 @@ int ExecutionTracker::releasedUpTo(int robot) const {
   int& k = released_[robot];
   k = std::max(k, progress_[robot]);
   const auto& steps = deps_.before[robot];
-  while (k < last_[robot] && std::all_of(steps[k].begin(), steps[k].end(), [&](const Requirement& r) { return met(r); }))
-    ++k;
+  auto released = [&](int t) {
+    return std::all_of(steps[t].begin(), steps[t].end(), [&](const Requirement& r) { return met(r); });
+  };
+  while (k < last_[robot] && released(k)) ++k;
   return k;
 }
 

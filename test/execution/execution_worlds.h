@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdint>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -43,8 +44,8 @@ inline PlanningOptions executionPlanning(std::uint64_t seed, int lattice_step) {
 }
 
 /// Plans `instance` on `map`; the plan only when planFleet succeeds and the validator accepts it.
-inline std::optional<PlannedWorld> planWorld(const GridMap& map, const Instance& instance, const PlanningOptions& options,
-                                             const std::string& name) {
+inline std::optional<PlannedWorld> planWorld(const GridMap& map, const Instance& instance,
+                                             const PlanningOptions& options, const std::string& name) {
   const PlanningResult r = planFleet(map, instance, options);
   if (!r.success()) return std::nullopt;
   PlannedWorld w;
@@ -54,7 +55,8 @@ inline std::optional<PlannedWorld> planWorld(const GridMap& map, const Instance&
   w.model = options.model;
   w.model.step = r.lattice_step;
   w.name = name + " (lattice " + std::to_string(r.lattice_step) + ")";
-  if (!validatePlan(w.map, w.instance, w.plan, w.model).valid()) throw std::logic_error(name + ": planFleet returned an invalid plan");
+  if (!validatePlan(w.map, w.instance, w.plan, w.model).valid())
+    throw std::logic_error(name + ": planFleet returned an invalid plan");
   return w;
 }
 
