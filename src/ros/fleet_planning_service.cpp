@@ -243,6 +243,22 @@ void FleetPlanningService::planChecked(const Request& request, const StartLookup
   if (failOnRobotErrors(call)) return;
 
   fillResponse(instance, grid, result, config_.seconds_per_step, cancel != nullptr && cancel->load(), call);
+  if (res.status == Response::SUCCESS) {
+    auto executable = std::make_shared<ExecutablePlan>();
+    executable->map = std::shared_ptr<const GridMap>(map, &map->grid);  // shares the snapshot
+    executable->instance = instance;
+    executable->plan = result.plan;
+    executable->lattice_step = result.lattice_step;
+    for (const auto& timeline : res.timelines) {
+      auto& poses = executable->poses.emplace_back();
+      for (const auto& s : timeline.states) {
+        geometry_msgs::Pose2D p;
+        p.x = s.x, p.y = s.y, p.theta = s.yaw;
+        poses.push_back(p);
+      }
+    }
+    call.executable = std::move(executable);
+  }
 }
 
 }  // namespace fleet_planner

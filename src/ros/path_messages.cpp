@@ -24,11 +24,13 @@ nav_msgs::Path toPathMessage(const fleet_planner::RobotTimeline& timeline, const
   return path;
 }
 
-std::string planTopicName(const std::string& robot_id) {
+std::string robotTopicName(const std::string& prefix, const std::string& robot_id) {
   std::string name;
   for (char c : robot_id) name += std::isalnum(static_cast<unsigned char>(c)) || c == '_' ? c : '_';
   if (name.empty() || std::isdigit(static_cast<unsigned char>(name[0]))) name = "r" + name;
-  return "plans/" + name;
+  return prefix + "/" + name;
 }
+
+std::string planTopicName(const std::string& robot_id) { return robotTopicName("plans", robot_id); }
 
 }  // namespace fleet_planner

@@ -113,6 +113,11 @@ std::vector<std::string> checkPlannerConfig(const PlannerConfig& c) {
   check.nonNegative("tf_timeout", c.tf_timeout);
   check.nonEmpty("planned_frame", c.planned_frame);
   check.positive("playback_rate", c.playback_rate);
+  check.positive("execution_rate", c.execution_rate);
+  check.positive("progress_tolerance", c.progress_tolerance);
+  check.positive("progress_heading_tolerance", c.progress_heading_tolerance);
+  check.positive("blocked_timeout", c.blocked_timeout);
+  check.nonNegative("late_warning", c.late_warning);
   return check.errors;
 }
 

@@ -82,7 +82,8 @@ const std::vector<std::string>& plannerParameterNames() {
       "busy_policy",       "max_map_cells",      "max_robots",      "max_memory_mb",     "occupied_threshold",
       "unknown_policy",    "position_tolerance", "heading_tolerance", "sweep_tolerance", "seconds_per_step",
       "map_frame",         "base_frame",         "tf_timeout",      "playback",          "planned_frame",
-      "playback_rate",     "playback_loop"};
+      "playback_rate",     "playback_loop",      "execute",         "execution_rate",    "progress_tolerance",
+      "progress_heading_tolerance", "blocked_timeout", "late_warning"};
   return names;
 }
 
@@ -131,6 +132,12 @@ PlannerConfig loadPlannerConfig(const ros::NodeHandle& nh) {
   r.read("planned_frame", c.planned_frame);
   r.read("playback_rate", c.playback_rate);
   r.read("playback_loop", c.playback_loop);
+  r.read("execute", c.execute);
+  r.read("execution_rate", c.execution_rate);
+  r.read("progress_tolerance", c.progress_tolerance);
+  r.read("progress_heading_tolerance", c.progress_heading_tolerance);
+  r.read("blocked_timeout", c.blocked_timeout);
+  r.read("late_warning", c.late_warning);
   return c;
 }
 

@@ -34,6 +34,9 @@ PlannerNode::PlannerNode(ros::NodeHandle nh, ros::NodeHandle private_nh, Planner
       ros::VoidConstPtr(), &service_queue_);
   plan_server_ = private_nh_.advertiseService(options);
   service_spinner_.start();
+  if (service_.config().execute) {
+    execution_ = std::make_unique<ExecutionRunner>(nh_, private_nh_, service_.config(), tf_buffer_);
+  }
   if (service_.config().playback) {
     playback_timer_ = nh_.createTimer(ros::Duration(1.0 / kPlaybackHz), &PlannerNode::onPlaybackTimer, this);
   }
@@ -134,7 +137,14 @@ void PlannerNode::publish(const PlanCall& call) {
   const auto& r = call.response;
   MarkerStyle style;
   style.map_frame = c.map_frame;
-  if (c.playback && r.status == fleet_planner::PlanFleet::Response::SUCCESS) style.planned_frame_suffix = c.planned_frame;
+  // The robots' markers ride on their frames: the real robots' while executing, else the playback's.
+  if (r.status == fleet_planner::PlanFleet::Response::SUCCESS) {
+    if (c.execute) {
+      style.planned_frame_suffix = c.base_frame;
+    } else if (c.playback) {
+      style.planned_frame_suffix = c.planned_frame;
+    }
+  }
   auto markers = buildPlanMarkers(call.placements, r.timelines, r.subproblems, style);
   const ros::Time now = ros::Time::now();
   for (auto& m : markers.markers) {
@@ -158,6 +168,7 @@ void PlannerNode::publish(const PlanCall& call) {
     }
     pub->second.publish(toPathMessage(timeline, c.map_frame, now, c.seconds_per_step));
   }
+  if (execution_ && call.executable) execution_->start(*call.executable, now);
   std::lock_guard<std::mutex> lock(playback_mutex_);
   playing_ = r.timelines;
   playback_start_ = now;

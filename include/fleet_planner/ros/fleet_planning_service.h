@@ -22,6 +22,8 @@
 
 #include "fleet_planner/planning/graph_cache.h"
 #include "fleet_planner/model/grid_map.h"
+#include "fleet_planner/model/instance.h"
+#include "fleet_planner/model/plan.h"
 #include "fleet_planner/ros/planner_config.h"
 
 namespace fleet_planner {
@@ -40,11 +42,22 @@ struct RobotPlacement {
   int subproblem = -1;
 };
 
-/// A call's response plus what the markers need.
+/// What a successful plan gives the execution: the core instance and plan, and the map.
+struct ExecutablePlan {
+  std::shared_ptr<const GridMap> map;
+  Instance instance;
+  Plan plan;
+  int lattice_step = 1;
+  /// Per robot, per state: the map-frame pose (the timelines' states: true start and goal yaws).
+  std::vector<std::vector<geometry_msgs::Pose2D>> poses;
+};
+
+/// A call's response plus what the markers and the execution need.
 struct PlanCall {
   fleet_planner::PlanFleet::Response response;
   std::vector<RobotPlacement> placements;  ///< robots whose start and goal are valid
   std::shared_ptr<const MapSnapshot> map;  ///< the map the call planned on (null: none)
+  std::shared_ptr<const ExecutablePlan> executable;  ///< on SUCCESS: the plan to execute
 };
 
 /// Looks up a robot's current pose in the map frame (TF); false with a reason if it cannot.

@@ -15,5 +15,7 @@ nav_msgs::Path toPathMessage(const fleet_planner::RobotTimeline& timeline, const
 /// The topic name of a robot's path under the node's namespace: "plans/<robot_id>", with every
 /// character a ROS name does not allow replaced by '_' (ids from the registry may hold any).
 std::string planTopicName(const std::string& robot_id);
+/// "<prefix>/<robot_id>" with the robot id made a ROS name likewise (e.g. "execution/amr_1").
+std::string robotTopicName(const std::string& prefix, const std::string& robot_id);
 
 }  // namespace fleet_planner

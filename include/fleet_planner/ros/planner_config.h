@@ -61,6 +61,14 @@ struct PlannerConfig {
   double playback_rate = 1.0;  ///< 2.0 plays twice as fast
   bool playback_loop = true;   ///< start over after the makespan (with a pause)
 
+  // Execution of the last plan by the robots (their poses from TF): releases, progress, overlaps.
+  bool execute = false;
+  double execution_rate = 10.0;       ///< Hz: poses read, releases and ~execution published
+  double progress_tolerance = 0.05;   ///< metres from a state's pose for the robot to count as there
+  double progress_heading_tolerance = 0.2;  ///< radians, likewise
+  double blocked_timeout = 10.0;      ///< seconds waiting for another robot before BLOCKED
+  double late_warning = 5.0;          ///< seconds behind the plan before the diagnostics warn
+
   OccupancyPolicy occupancyPolicy() const { return {occupied_threshold, unknown_policy == "free"}; }
   PoseTolerance poseTolerance() const { return {position_tolerance, heading_tolerance}; }
   ResourceLimits resourceLimits() const { return {max_map_cells, max_robots, max_memory_mb}; }

@@ -27,6 +27,7 @@
 #include <tf2_ros/transform_listener.h>
 
 #include "fleet_planner/ros/backend_loader.h"
+#include "fleet_planner/ros/execution_runner.h"
 #include "fleet_planner/ros/fleet_planning_service.h"
 
 namespace fleet_planner {
@@ -61,6 +62,8 @@ class PlannerNode {
   ros::Publisher timelines_pub_, markers_pub_;
   std::map<std::string, ros::Publisher> path_pubs_;  ///< ~plans/<robot_id>, latched, by robot id
   ros::Timer playback_timer_;
+
+  std::unique_ptr<ExecutionRunner> execution_;  ///< with parameter `execute`
 
   std::mutex playback_mutex_;  ///< guards the two below
   std::vector<fleet_planner::RobotTimeline> playing_;

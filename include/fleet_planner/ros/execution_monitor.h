@@ -1,0 +1,72 @@
+#pragma once
+/// Live execution of the last plan (issue: live fleets): each robot's progress from its pose,
+/// what it may drive through (the plan's step dependencies, execution/step_dependencies.h),
+/// lateness, robots waiting too long, and overlaps of the robots' footprints as they really
+/// stand. No ROS master needed: the node feeds it poses and times, gtest does the same.
+///
+/// A robot has reached plan state k when its pose is within the tolerances of that state's pose;
+/// progress only goes forward, and only through released states. Robots that stand still are
+/// never moved on: a robot that falls behind holds those that must wait for it, nobody else.
+#include <map>
+#include <memory>
+#include <optional>
+#include <set>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <diagnostic_msgs/DiagnosticArray.h>
+#include <fleet_planner/FleetExecution.h>
+#include <geometry_msgs/Pose2D.h>
+#include <ros/time.h>
+
+#include "fleet_planner/execution/execution_tracker.h"
+#include "fleet_planner/ros/fleet_planning_service.h"
+
+namespace fleet_planner {
+
+struct ExecutionSettings {
+  double position_tolerance = 0.05;  ///< metres from a state's pose to count as there
+  double heading_tolerance = 0.2;    ///< radians
+  double blocked_timeout = 10.0;     ///< seconds waiting before a robot is BLOCKED
+  double late_warning = 5.0;         ///< seconds late before its diagnostics warn
+};
+
+class ExecutionMonitor {
+ public:
+  explicit ExecutionMonitor(ExecutionSettings settings) : settings_(settings) {}
+
+  /// Starts executing `plan` (replacing any running one): every robot at its state 0.
+  void start(ExecutablePlan plan, double seconds_per_step, const std::string& map_frame, const ros::Time& now);
+  bool running() const { return tracker_ != nullptr; }
+  /// The running plan's robot ids, in plan order.
+  const std::vector<std::string>& robotIds() const { return ids_; }
+  /// Requirements between the running plan's steps (FleetExecution::dependencies).
+  std::uint32_t dependencies() const { return message_.dependencies; }
+
+  /// One update from the robots' current poses (plan order; nullopt: no pose known).
+  /// Returns the execution's state. Requires running().
+  fleet_planner::FleetExecution update(const std::vector<std::optional<geometry_msgs::Pose2D>>& poses,
+                                       const ros::Time& now);
+
+ private:
+  int progressFrom(int robot, const geometry_msgs::Pose2D& pose) const;
+  /// Pairs of robots (i < j) whose footprints at their poses share a map cell.
+  std::set<std::pair<int, int>> overlaps(const std::vector<std::optional<geometry_msgs::Pose2D>>& poses) const;
+
+  ExecutionSettings settings_;
+  ExecutablePlan plan_;
+  std::unique_ptr<ExecutionTracker> tracker_;
+  std::vector<std::string> ids_;
+  fleet_planner::FleetExecution message_;
+  std::vector<ros::Time> waiting_since_;  ///< when each robot last stood at its release (zero: driving)
+  std::set<std::pair<int, int>> touching_;  ///< overlapping pairs at the last update
+  std::uint32_t plans_ = 0;
+};
+
+/// One status per robot (OK, WARN when late or blocked, ERROR without a pose) and one for the
+/// fleet (ERROR once robots overlapped), as diagnostic_msgs for rqt and the aggregator.
+diagnostic_msgs::DiagnosticArray executionDiagnostics(const fleet_planner::FleetExecution& execution,
+                                                      const ExecutionSettings& settings, const ros::Time& now);
+
+}  // namespace fleet_planner

@@ -1,0 +1,117 @@
+"""Simulated robots that drive their released plan steps, late: the fleet simulator's model, without ROS.
+
+Each robot follows its timeline's states (x, y, yaw) one step at a time, but only through the
+states the planner's execution has released to it. A step takes seconds_per_step times a random
+factor in [1, 1 + slowdown]; a step that repeats the pose (a wait in the plan) takes no time, as
+the execution lets a robot skip waits once it is released. A robot may stop: at random, before a
+step (probability stop_probability, for stop_seconds), or held on purpose (hold()). Seeded: the
+same seed and calls give the same motion. With uncoordinated=True every state is released and a
+wait takes its step's time: the plan driven on its own timing, late, as robots that nobody
+coordinates would (a negative control for the execution).
+"""
+import math
+import random
+
+
+def lerp_pose(a, b, f):
+    """The pose a fraction f of the way from a to b; the yaw turns the shorter way."""
+    turn = math.remainder(b[2] - a[2], 2 * math.pi)
+    return (a[0] + (b[0] - a[0]) * f, a[1] + (b[1] - a[1]) * f, math.remainder(a[2] + turn * f, 2 * math.pi))
+
+
+class SimulatedRobot:
+    """One robot: its pose, and where it is on its timeline."""
+
+    def __init__(self, robot_id, pose):
+        self.robot_id = robot_id
+        self.pose = tuple(pose)
+        self.states = []        # the running plan's states, (x, y, yaw)
+        self.index = 0          # the last state reached
+        self.fraction = 0.0     # of the way to state index + 1
+        self.step_seconds = 0.0  # the current step's duration (0: not begun)
+        self.stopped_for = 0.0  # seconds left standing still
+        self.released = 0
+
+    def follow(self, states):
+        """Starts a new plan: its first state is where the robot stands (the planner started it there)."""
+        self.states = [tuple(s) for s in states]
+        self.index, self.fraction, self.step_seconds, self.released = 0, 0.0, 0.0, 0
+        if self.states:
+            self.pose = self.states[0]
+
+    def arrived(self):
+        return not self.states or self.index >= len(self.states) - 1
+
+
+class FleetSimulation:
+    """The fleet's motion: advance(dt) moves every robot along its released states."""
+
+    def __init__(self, seconds_per_step, slowdown=0.0, stop_probability=0.0, stop_seconds=0.0, seed=0,
+                 uncoordinated=False):
+        if seconds_per_step <= 0 or slowdown < 0 or not 0 <= stop_probability <= 1 or stop_seconds < 0:
+            raise ValueError("seconds_per_step > 0, slowdown >= 0, stop_probability in [0, 1], stop_seconds >= 0")
+        self.seconds_per_step = seconds_per_step
+        self.slowdown = slowdown
+        self.stop_probability = stop_probability
+        self.stop_seconds = stop_seconds
+        self.rng = random.Random(seed)
+        self.robots = {}
+        self.uncoordinated = uncoordinated
+        self.stops = 0  # random stops so far
+
+    def add(self, robot_id, pose):
+        self.robots[robot_id] = SimulatedRobot(robot_id, pose)
+
+    def follow(self, timelines, seconds_per_step=None):
+        """A new plan: robot id -> [(x, y, yaw), ...]. Robots not in it stand still."""
+        if seconds_per_step:
+            self.seconds_per_step = seconds_per_step
+        for robot_id, states in sorted(timelines.items()):
+            if robot_id not in self.robots:
+                self.add(robot_id, states[0])
+            self.robots[robot_id].follow(states)
+            if self.uncoordinated:
+                self.robots[robot_id].released = len(states) - 1
+
+    def release(self, robot_id, released):
+        robot = self.robots.get(robot_id)
+        if robot is not None and robot.states:
+            robot.released = max(robot.released, min(int(released), len(robot.states) - 1))
+
+    def hold(self, robot_id, seconds):
+        """Stops the robot where it is for `seconds` (a fault: a person in the way)."""
+        robot = self.robots[robot_id]
+        robot.stopped_for = max(robot.stopped_for, seconds)
+
+    def advance(self, dt):
+        for robot_id in sorted(self.robots):
+            self._advance(self.robots[robot_id], dt)
+
+    def _advance(self, robot, dt):
+        while dt > 0 and not robot.arrived():
+            if robot.stopped_for > 0:
+                spent = min(dt, robot.stopped_for)
+                robot.stopped_for -= spent
+                dt -= spent
+                continue
+            if robot.index >= robot.released:
+                return  # waits for its release
+            here, there = robot.states[robot.index], robot.states[robot.index + 1]
+            if robot.step_seconds == 0.0:  # the step begins: draw its duration, and maybe a stop
+                if here == there and not self.uncoordinated:  # a wait of the plan: nothing to drive
+                    robot.index += 1
+                    continue
+                robot.step_seconds = self.seconds_per_step * (1.0 + self.rng.uniform(0.0, self.slowdown))
+                if self.stop_probability and self.rng.random() < self.stop_probability:
+                    self.stops += 1
+                    robot.stopped_for = self.stop_seconds
+                    continue
+            left = (1.0 - robot.fraction) * robot.step_seconds
+            if dt < left:
+                robot.fraction += dt / robot.step_seconds
+                robot.pose = lerp_pose(here, there, robot.fraction)
+                return
+            dt -= left
+            robot.index += 1
+            robot.fraction, robot.step_seconds = 0.0, 0.0
+            robot.pose = there

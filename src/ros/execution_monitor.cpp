@@ -1,0 +1,196 @@
+#include "fleet_planner/ros/execution_monitor.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <diagnostic_msgs/DiagnosticStatus.h>
+#include <diagnostic_msgs/KeyValue.h>
+#include <fleet_planner/RobotExecution.h>
+
+#include "fleet_planner/execution/step_dependencies.h"
+#include "fleet_planner/model/footprint_cells.h"
+#include "fleet_planner/ros/conversions.h"
+
+namespace fleet_planner {
+
+namespace {
+
+using RobotExecutionMsg = fleet_planner::RobotExecution;
+
+// A map-frame pose in the grid's frame: cells (continuous) and the yaw.
+struct GridPoint {
+  double x, y, yaw;
+};
+
+GridPoint toGrid(const GridMap& map, const geometry_msgs::Pose2D& pose) {
+  const MapOrigin& o = map.origin();
+  const double c = std::cos(o.yaw), s = std::sin(o.yaw);
+  const double dx = pose.x - o.x, dy = pose.y - o.y;
+  return {(c * dx + s * dy) / map.resolution(), (-s * dx + c * dy) / map.resolution(), pose.theta - o.yaw};
+}
+
+}  // namespace
+
+void ExecutionMonitor::start(ExecutablePlan plan, double seconds_per_step, const std::string& map_frame,
+                             const ros::Time& now) {
+  ActionModel model;
+  model.step = plan.lattice_step;
+  StepDependencies dependencies = buildStepDependencies(plan.instance, plan.plan, model);
+  const std::size_t count = dependencies.count();
+  tracker_ = std::make_unique<ExecutionTracker>(plan.plan, std::move(dependencies));
+  plan_ = std::move(plan);
+  ids_.clear();
+  for (const Robot& r : plan_.instance.robots) ids_.push_back(r.id);
+  message_ = fleet_planner::FleetExecution();
+  message_.header.frame_id = map_frame;
+  message_.header.stamp = now;
+  message_.plan = ++plans_;
+  message_.seconds_per_step = seconds_per_step;
+  message_.dependencies = static_cast<std::uint32_t>(count);
+  message_.robots.resize(ids_.size());
+  for (std::size_t i = 0; i < ids_.size(); ++i) {
+    message_.robots[i].robot_id = ids_[i];
+    message_.robots[i].last_state = tracker_->lastState(static_cast<int>(i));
+  }
+  waiting_since_.assign(ids_.size(), ros::Time());
+  touching_.clear();
+}
+
+int ExecutionMonitor::progressFrom(int robot, const geometry_msgs::Pose2D& pose) const {
+  const auto& states = plan_.poses[robot];
+  const double tol = settings_.position_tolerance, yaw_tol = settings_.heading_tolerance;
+  auto at = [&](const geometry_msgs::Pose2D& s) {
+    return std::hypot(pose.x - s.x, pose.y - s.y) <= tol && std::abs(wrapAngle(pose.theta - s.theta)) <= yaw_tol;
+  };
+  // On the way from a to b: near the segment between them, and turned part of the way between
+  // their yaws (the shorter way). A robot seen there has reached a, even if no sample caught it
+  // at a itself.
+  auto between = [&](const geometry_msgs::Pose2D& a, const geometry_msgs::Pose2D& b) {
+    const double dx = b.x - a.x, dy = b.y - a.y, len2 = dx * dx + dy * dy;
+    const double f = len2 > 0 ? std::clamp(((pose.x - a.x) * dx + (pose.y - a.y) * dy) / len2, 0.0, 1.0) : 0.0;
+    if (std::hypot(pose.x - (a.x + f * dx), pose.y - (a.y + f * dy)) > tol) return false;
+    const double turn = wrapAngle(b.theta - a.theta), turned = wrapAngle(pose.theta - a.theta);
+    return turn >= 0 ? turned >= -yaw_tol && turned <= turn + yaw_tol : turned <= yaw_tol && turned >= turn - yaw_tol;
+  };
+  const int released = tracker_->releasedUpTo(robot);
+  for (int k = released; k > tracker_->progress(robot); --k) {
+    if (at(states[k]) || (k < released && between(states[k], states[k + 1]))) return k;
+  }
+  return tracker_->progress(robot);
+}
+
+std::set<std::pair<int, int>> ExecutionMonitor::overlaps(
+    const std::vector<std::optional<geometry_msgs::Pose2D>>& poses) const {
+  const GridMap& map = *plan_.map;
+  const int n = static_cast<int>(poses.size());
+  std::vector<GridPoint> at(n);
+  for (int i = 0; i < n; ++i) {
+    if (poses[i]) at[i] = toGrid(map, *poses[i]);
+  }
+  std::vector<std::optional<std::pair<Cell, CellSet>>> cells(n);
+  auto cellsOf = [&](int i) -> const std::pair<Cell, CellSet>& {
+    if (!cells[i]) {
+      const Cell cell{static_cast<int>(std::floor(at[i].x)), static_cast<int>(std::floor(at[i].y))};
+      const Eigen::Vector2d offset(at[i].x - cell.x - 0.5, at[i].y - cell.y - 0.5);
+      cells[i].emplace(cell, footprintCellsAt(plan_.instance.robots[i].footprint, at[i].yaw, offset));
+    }
+    return *cells[i];
+  };
+  std::set<std::pair<int, int>> out;
+  for (int i = 0; i < n; ++i) {
+    if (!poses[i]) continue;
+    const double ri = plan_.instance.robots[i].footprint.circumscribedRadius();
+    for (int j = i + 1; j < n; ++j) {
+      if (!poses[j]) continue;
+      const double reach = ri + plan_.instance.robots[j].footprint.circumscribedRadius() + 2.0;
+      if (std::hypot(at[i].x - at[j].x, at[i].y - at[j].y) > reach) continue;
+      const auto& [ci, si] = cellsOf(i);
+      const auto& [cj, sj] = cellsOf(j);
+      if (CellSet::overlap(si, ci, sj, cj)) out.insert({i, j});
+    }
+  }
+  return out;
+}
+
+fleet_planner::FleetExecution ExecutionMonitor::update(const std::vector<std::optional<geometry_msgs::Pose2D>>& poses,
+                                                       const ros::Time& now) {
+  const int n = static_cast<int>(ids_.size());
+  for (int i = 0; i < n && i < static_cast<int>(poses.size()); ++i) {
+    if (poses[i]) tracker_->reportProgress(i, progressFrom(i, *poses[i]));
+  }
+  // Overlaps: a pair counts once per contact, however long it lasts.
+  const auto touching = overlaps(poses);
+  for (const auto& pair : touching) {
+    if (!touching_.count(pair)) ++message_.collisions;
+  }
+  touching_ = touching;
+
+  const double elapsed = (now - message_.header.stamp).toSec();
+  for (int i = 0; i < n; ++i) {
+    auto& r = message_.robots[i];
+    r.progress = tracker_->progress(i);
+    r.released = tracker_->releasedUpTo(i);
+    r.next_waypoint = plan_.poses[i][std::min<int>(r.released, r.progress + 1)];
+    const auto holder = tracker_->blockedBy(i);
+    r.blocked_by = holder && r.released == r.progress ? ids_[holder->robot] : "";
+    const int next = std::min<int>(r.progress + 1, r.last_state);
+    r.lateness = tracker_->done(i) ? 0.0 : std::max(0.0, elapsed - next * message_.seconds_per_step);
+    if (tracker_->done(i)) {
+      r.state = RobotExecutionMsg::ARRIVED;
+    } else if (i >= static_cast<int>(poses.size()) || !poses[i]) {
+      r.state = RobotExecutionMsg::NO_POSE;
+    } else if (r.released > r.progress) {
+      r.state = RobotExecutionMsg::DRIVING;
+    } else {
+      r.state = RobotExecutionMsg::WAITING;
+    }
+    if (r.state == RobotExecutionMsg::WAITING) {
+      if (waiting_since_[i].isZero()) waiting_since_[i] = now;
+      if ((now - waiting_since_[i]).toSec() > settings_.blocked_timeout) r.state = RobotExecutionMsg::BLOCKED;
+    } else {
+      waiting_since_[i] = ros::Time();
+    }
+  }
+  message_.done = tracker_->done();
+  return message_;
+}
+
+diagnostic_msgs::DiagnosticArray executionDiagnostics(const fleet_planner::FleetExecution& execution,
+                                                      const ExecutionSettings& settings, const ros::Time& now) {
+  using Status = diagnostic_msgs::DiagnosticStatus;
+  auto value = [](const std::string& key, const std::string& v) {
+    diagnostic_msgs::KeyValue kv;
+    kv.key = key, kv.value = v;
+    return kv;
+  };
+  diagnostic_msgs::DiagnosticArray out;
+  out.header.stamp = now;
+  Status fleet;
+  fleet.name = "fleet_planner: execution";
+  fleet.hardware_id = "plan " + std::to_string(execution.plan);
+  fleet.level = execution.collisions > 0 ? Status::ERROR : Status::OK;
+  fleet.message = execution.collisions > 0 ? std::to_string(execution.collisions) + " overlaps of robots seen"
+                  : execution.done ? "every robot arrived"
+                                   : "executing";
+  fleet.values = {value("dependencies", std::to_string(execution.dependencies)),
+                  value("collisions", std::to_string(execution.collisions))};
+  out.status.push_back(fleet);
+  static const char* const kStates[] = {"waiting", "driving", "blocked", "arrived", "no pose"};
+  for (const auto& r : execution.robots) {
+    Status s;
+    s.name = "fleet_planner: execution: " + r.robot_id;
+    s.hardware_id = r.robot_id;
+    s.message = r.state < 5 ? kStates[r.state] : "unknown";
+    if (!r.blocked_by.empty()) s.message += " for " + r.blocked_by;
+    s.level = r.state == RobotExecutionMsg::NO_POSE                                        ? Status::ERROR
+              : r.state == RobotExecutionMsg::BLOCKED || r.lateness > settings.late_warning ? Status::WARN
+                                                                                             : Status::OK;
+    s.values = {value("progress", std::to_string(r.progress)), value("released", std::to_string(r.released)),
+                value("last_state", std::to_string(r.last_state)), value("lateness_s", std::to_string(r.lateness)),
+                value("blocked_by", r.blocked_by)};
+    out.status.push_back(s);
+  }
+  return out;
+}
+
+}  // namespace fleet_planner

@@ -1,0 +1,85 @@
+#include "fleet_planner/ros/execution_runner.h"
+
+#include <tf2/utils.h>
+
+#include "fleet_planner/ros/path_messages.h"
+
+namespace fleet_planner {
+
+namespace {
+
+ExecutionSettings executionSettings(const PlannerConfig& c) {
+  ExecutionSettings s;
+  s.position_tolerance = c.progress_tolerance;
+  s.heading_tolerance = c.progress_heading_tolerance;
+  s.blocked_timeout = c.blocked_timeout;
+  s.late_warning = c.late_warning;
+  return s;
+}
+
+bool sameRelease(const fleet_planner::RobotExecution& a, const fleet_planner::RobotExecution& b) {
+  return a.state == b.state && a.progress == b.progress && a.released == b.released && a.blocked_by == b.blocked_by;
+}
+
+}  // namespace
+
+ExecutionRunner::ExecutionRunner(ros::NodeHandle nh, ros::NodeHandle private_nh, const PlannerConfig& config,
+                                 tf2_ros::Buffer& tf)
+    : config_(config), tf_(tf), private_nh_(private_nh), monitor_(executionSettings(config)) {
+  execution_pub_ = private_nh_.advertise<fleet_planner::FleetExecution>("execution", 1, true);
+  diagnostics_pub_ = nh.advertise<diagnostic_msgs::DiagnosticArray>("/diagnostics", 10);
+  timer_ = nh.createTimer(ros::Duration(1.0 / config.execution_rate), &ExecutionRunner::onTimer, this);
+}
+
+void ExecutionRunner::start(const ExecutablePlan& plan, const ros::Time& plan_start) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  monitor_.start(plan, config_.seconds_per_step, config_.map_frame, plan_start);
+  last_sent_.clear();
+  for (const std::string& id : monitor_.robotIds()) {
+    if (!robot_pubs_.count(id)) {
+      robot_pubs_.emplace(id, private_nh_.advertise<fleet_planner::RobotExecution>(robotTopicName("execution", id), 1,
+                                                                                  true));
+    }
+  }
+  ROS_INFO("fleet_planner: executing the plan of %zu robots (%u dependencies between their steps)",
+           monitor_.robotIds().size(), monitor_.dependencies());
+}
+
+std::optional<geometry_msgs::Pose2D> ExecutionRunner::poseOf(const std::string& robot_id) const {
+  try {
+    const auto t = tf_.lookupTransform(config_.map_frame, robot_id + "/" + config_.base_frame, ros::Time(0));
+    geometry_msgs::Pose2D pose;
+    pose.x = t.transform.translation.x;
+    pose.y = t.transform.translation.y;
+    pose.theta = tf2::getYaw(t.transform.rotation);
+    return pose;
+  } catch (const std::exception&) {
+    return std::nullopt;  // reported as NO_POSE
+  }
+}
+
+void ExecutionRunner::onTimer(const ros::TimerEvent&) {
+  try {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (!monitor_.running()) return;
+    std::vector<std::optional<geometry_msgs::Pose2D>> poses;
+    for (const std::string& id : monitor_.robotIds()) poses.push_back(poseOf(id));
+    const ros::Time now = ros::Time::now();
+    const fleet_planner::FleetExecution execution = monitor_.update(poses, now);
+    execution_pub_.publish(execution);
+    for (const auto& robot : execution.robots) {
+      auto sent = last_sent_.find(robot.robot_id);
+      if (sent != last_sent_.end() && sameRelease(sent->second, robot)) continue;
+      robot_pubs_[robot.robot_id].publish(robot);
+      last_sent_[robot.robot_id] = robot;
+    }
+    if ((now - last_diagnostics_).toSec() >= 1.0) {
+      diagnostics_pub_.publish(executionDiagnostics(execution, executionSettings(config_), now));
+      last_diagnostics_ = now;
+    }
+  } catch (const std::exception& e) {
+    ROS_ERROR_THROTTLE(5.0, "fleet_planner: execution: %s", e.what());
+  }
+}
+
+}  // namespace fleet_planner

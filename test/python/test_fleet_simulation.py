@@ -1,0 +1,85 @@
+"""Tests of fleet_planner.fleet_simulation (the fleet simulator's model). No ROS master needed.
+
+Run: PYTHONPATH=src /usr/bin/python3 -m unittest discover -s test/python
+"""
+import math
+import unittest
+
+from fleet_planner.fleet_simulation import FleetSimulation, lerp_pose
+
+LINE = [(0.0, 0.0, 0.0), (1.0, 0.0, 0.0), (1.0, 0.0, 0.0), (2.0, 0.0, 0.0), (2.0, 0.0, math.pi / 2)]
+
+
+def run(sim, seconds, dt=0.05):
+    for _ in range(int(round(seconds / dt))):
+        sim.advance(dt)
+
+
+class DrivesReleasedSteps(unittest.TestCase):
+    def test_stands_still_until_released(self):
+        sim = FleetSimulation(1.0)
+        sim.follow({"a": LINE})
+        run(sim, 3.0)
+        self.assertEqual(sim.robots["a"].pose, LINE[0])
+        self.assertEqual(sim.robots["a"].index, 0)
+
+    def test_stops_at_its_release_and_skips_the_plans_waits(self):
+        sim = FleetSimulation(1.0)
+        sim.follow({"a": LINE})
+        sim.release("a", 3)
+        run(sim, 1.5)  # the wait (state 1 -> 2) takes no time: halfway to state 3
+        self.assertEqual(sim.robots["a"].index, 2)
+        self.assertAlmostEqual(sim.robots["a"].pose[0], 1.5, places=6)
+        run(sim, 5.0)
+        self.assertEqual(sim.robots["a"].index, 3)
+        self.assertEqual(sim.robots["a"].pose, LINE[3])
+        sim.release("a", 4)
+        run(sim, 1.0)
+        self.assertTrue(sim.robots["a"].arrived())
+        self.assertAlmostEqual(sim.robots["a"].pose[2], math.pi / 2)
+
+    def test_slowdown_makes_steps_longer_within_the_bound(self):
+        sim = FleetSimulation(1.0, slowdown=0.5, seed=3)
+        sim.follow({"a": LINE})
+        sim.release("a", 4)
+        run(sim, 2.9)  # three steps of at least 1 s each
+        self.assertFalse(sim.robots["a"].arrived())
+        run(sim, 1.6)  # and at most 1.5 s each
+        self.assertTrue(sim.robots["a"].arrived())
+
+    def test_a_held_robot_stands_for_the_time_held(self):
+        sim = FleetSimulation(1.0)
+        sim.follow({"a": LINE})
+        sim.release("a", 4)
+        sim.hold("a", 2.0)
+        run(sim, 1.9)
+        self.assertEqual(sim.robots["a"].pose, LINE[0])
+        run(sim, 3.2)
+        self.assertTrue(sim.robots["a"].arrived())
+
+    def test_random_stops_are_counted_and_seeded(self):
+        def final(seed):
+            sim = FleetSimulation(0.5, slowdown=0.5, stop_probability=0.5, stop_seconds=0.3, seed=seed)
+            sim.follow({"a": LINE, "b": list(reversed(LINE))})
+            sim.release("a", 4)
+            sim.release("b", 4)
+            run(sim, 1.7)
+            return sim.stops, sim.robots["a"].pose, sim.robots["b"].pose
+        self.assertEqual(final(5), final(5))
+        self.assertGreater(max(final(s)[0] for s in range(5)), 0)
+
+    def test_uncoordinated_robots_drive_the_plans_timing_waits_included(self):
+        sim = FleetSimulation(1.0, uncoordinated=True)
+        sim.follow({"a": LINE})
+        run(sim, 1.5)  # released without asking; the wait (state 1 -> 2) takes its second
+        self.assertEqual(sim.robots["a"].index, 1)
+        run(sim, 2.6)
+        self.assertTrue(sim.robots["a"].arrived())
+
+    def test_yaw_turns_the_shorter_way(self):
+        pose = lerp_pose((0, 0, 3.0), (0, 0, -3.0), 0.5)
+        self.assertAlmostEqual(abs(pose[2]), math.pi, places=6)
+
+
+if __name__ == "__main__":
+    unittest.main()

@@ -1,0 +1,161 @@
+// The execution monitor without a master: a plan of the service, executed by feeding the
+// robots' poses as a robot's TF would give them.
+#include <gtest/gtest.h>
+
+#include <diagnostic_msgs/DiagnosticStatus.h>
+#include <fleet_planner/RobotExecution.h>
+
+#include "fleet_planner/ros/execution_monitor.h"
+#include "ros_test_util.h"
+
+namespace fleet_planner::test {
+namespace {
+
+using RobotMsg = fleet_planner::RobotExecution;
+using Poses = std::vector<std::optional<geometry_msgs::Pose2D>>;
+
+class ExecutionMonitorTest : public ::testing::Test {
+ protected:
+  ExecutionMonitorTest() : service(PlannerConfig{}) {
+    service.setMap(occupancyGrid(24, 12, kRes, kOx, kOy, {{8, 8}, {8, 9}, {15, 1}}));
+    service.setFootprints(registry());
+    call = service.plan(swapRequest(), nullptr);
+  }
+  void SetUp() override {
+    ASSERT_EQ(call.response.status, fleet_planner::PlanFleet::Response::SUCCESS) << call.response.message;
+    ASSERT_TRUE(call.executable);
+  }
+  ExecutionMonitor started(ExecutionSettings settings = {}) {
+    ExecutionMonitor monitor(settings);
+    monitor.start(*call.executable, 0.5, "map", ros::Time(100));
+    return monitor;
+  }
+  const geometry_msgs::Pose2D& state(int robot, int k) const { return call.executable->poses[robot][k]; }
+  Poses startPoses() const {
+    Poses poses;
+    for (std::size_t i = 0; i < call.executable->poses.size(); ++i) poses.push_back(state(i, 0));
+    return poses;
+  }
+  /// Moves every robot but `held` to its released state and updates, until nothing changes.
+  fleet_planner::FleetExecution driveAllBut(ExecutionMonitor& monitor, Poses& poses, int held, double& t) {
+    fleet_planner::FleetExecution e = monitor.update(poses, ros::Time(t));
+    for (int round = 0; round < 10000; ++round) {
+      bool moved = false;
+      for (std::size_t i = 0; i < poses.size(); ++i) {
+        if (static_cast<int>(i) == held || e.robots[i].released == e.robots[i].progress) continue;
+        poses[i] = state(i, e.robots[i].released);
+        moved = true;
+      }
+      t += 0.1;
+      e = monitor.update(poses, ros::Time(t));
+      if (!moved) break;
+    }
+    return e;
+  }
+
+  FleetPlanningService service;
+  PlanCall call;
+};
+
+TEST_F(ExecutionMonitorTest, ReleasesFollowProgressAndEveryRobotArrives) {
+  ExecutionMonitor monitor = started();
+  Poses poses = startPoses();
+  const auto first = monitor.update(poses, ros::Time(100));
+  EXPECT_GT(first.dependencies, 0u) << "the swap makes robots wait for each other";
+  bool someone_held = false;
+  for (const auto& r : first.robots) someone_held |= r.released < r.last_state;
+  EXPECT_TRUE(someone_held);
+  double t = 100;
+  const auto end = driveAllBut(monitor, poses, -1, t);
+  EXPECT_TRUE(end.done);
+  EXPECT_EQ(end.collisions, 0u);
+  for (const auto& r : end.robots) {
+    EXPECT_EQ(r.state, RobotMsg::ARRIVED) << r.robot_id;
+    EXPECT_EQ(r.progress, r.last_state) << r.robot_id;
+  }
+}
+
+TEST_F(ExecutionMonitorTest, AHeldRobotHoldsThoseThatWaitForItAndOnlyUntilItMoves) {
+  bool someone_waited = false;
+  for (int held = 0; held < 3; ++held) {
+    ExecutionMonitor monitor = started();
+    Poses poses = startPoses();
+    double t = 100;
+    const auto stuck = driveAllBut(monitor, poses, held, t);
+    EXPECT_FALSE(stuck.done);
+    for (int i = 0; i < 3; ++i) {
+      const auto& r = stuck.robots[i];
+      if (i == held || r.state == RobotMsg::ARRIVED) continue;
+      EXPECT_EQ(r.state, RobotMsg::WAITING) << r.robot_id;
+      EXPECT_FALSE(r.blocked_by.empty()) << r.robot_id;
+      someone_waited |= r.blocked_by == stuck.robots[held].robot_id;
+    }
+    const auto end = driveAllBut(monitor, poses, -1, t);
+    EXPECT_TRUE(end.done) << "held " << held;
+    EXPECT_EQ(end.collisions, 0u);
+  }
+  EXPECT_TRUE(someone_waited) << "some robot waits for a held one";
+}
+
+TEST_F(ExecutionMonitorTest, ARobotSeenBetweenTwoStatesHasReachedTheFirst) {
+  ExecutionMonitor monitor = started();
+  Poses poses = startPoses();
+  const auto e = monitor.update(poses, ros::Time(100));
+  for (int i = 0; i < 3; ++i) {
+    // The first move of the robot's release beyond state 1: sampled halfway.
+    for (int k = 1; k + 1 <= static_cast<int>(e.robots[i].released); ++k) {
+      const auto &a = state(i, k), &b = state(i, k + 1);
+      if (a.x == b.x && a.y == b.y) continue;
+      geometry_msgs::Pose2D mid = a;
+      mid.x = (a.x + b.x) / 2, mid.y = (a.y + b.y) / 2;
+      poses[i] = mid;
+      EXPECT_EQ(monitor.update(poses, ros::Time(101)).robots[i].progress, static_cast<unsigned>(k));
+      return;
+    }
+  }
+  FAIL() << "no robot released beyond its first move";
+}
+
+TEST_F(ExecutionMonitorTest, OverlapsAreCountedOncePerContact) {
+  ExecutionMonitor monitor = started();
+  Poses poses = startPoses();
+  EXPECT_EQ(monitor.update(poses, ros::Time(100)).collisions, 0u);
+  Poses touching = poses;
+  touching[1] = poses[0];  // amr_2 where amr_1 stands
+  EXPECT_EQ(monitor.update(touching, ros::Time(101)).collisions, 1u);
+  EXPECT_EQ(monitor.update(touching, ros::Time(102)).collisions, 1u);
+  EXPECT_EQ(monitor.update(poses, ros::Time(103)).collisions, 1u);
+  Poses near = poses;  // close, not touching: the two discs (radii 0.3 and 0.2 m) more than 2 cells apart
+  near[1] = poses[0];
+  near[1]->y += 0.5 + 2.5 * kRes;
+  EXPECT_EQ(monitor.update(near, ros::Time(104)).collisions, 1u);
+  const auto again = monitor.update(touching, ros::Time(105));
+  EXPECT_EQ(again.collisions, 2u);
+  const auto diagnostics = executionDiagnostics(again, {}, ros::Time(105));
+  ASSERT_EQ(diagnostics.status.size(), 4u);
+  EXPECT_EQ(diagnostics.status[0].level, diagnostic_msgs::DiagnosticStatus::ERROR);
+}
+
+TEST_F(ExecutionMonitorTest, MissingPosesAndLongWaitsAreReported) {
+  ExecutionSettings settings;
+  settings.blocked_timeout = 1.0;
+  for (int held = 0; held < 3; ++held) {
+    ExecutionMonitor monitor = started(settings);
+    Poses poses = startPoses();
+    double t = 100;
+    auto e = driveAllBut(monitor, poses, held, t);
+    poses[held].reset();
+    e = monitor.update(poses, ros::Time(t + 60.0));  // later than any state's planned time
+    EXPECT_EQ(e.robots[held].state, RobotMsg::NO_POSE);
+    for (int i = 0; i < 3; ++i) {
+      if (i == held || e.robots[i].state == RobotMsg::ARRIVED) continue;
+      EXPECT_EQ(e.robots[i].state, RobotMsg::BLOCKED) << e.robots[i].robot_id;
+      EXPECT_GT(e.robots[i].lateness, 0.0);
+    }
+    const auto diagnostics = executionDiagnostics(e, settings, ros::Time(t + 60.0));
+    EXPECT_EQ(diagnostics.status[1 + held].level, diagnostic_msgs::DiagnosticStatus::ERROR);
+  }
+}
+
+}  // namespace
+}  // namespace fleet_planner::test
