@@ -17,25 +17,13 @@ import math
 import os
 import random
 import sys
-from collections import deque
-
-import numpy
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "src"))
 
 from fleet_planner.fleet_config import load_fleet  # noqa: E402
 from fleet_planner.map_yaml import load_map  # noqa: E402
-
-
-def reach(footprint):
-    """Circumscribed radius (metres)."""
-    if footprint.kind == "circle":
-        return footprint.radius
-    if footprint.kind == "block":
-        return max(math.hypot(x, y) for x in (footprint.min_x, footprint.max_x)
-                   for y in (footprint.min_y, footprint.max_y))
-    return max(math.hypot(x, y) for x, y in footprint.points)
+from fleet_planner.pose_sampling import PoseSampler  # noqa: E402
 
 
 def nearest_heading(yaw):
@@ -61,43 +49,6 @@ def scenario_footprint(footprint, resolution):
     return "{type: polygon, points: [%s]}" % points
 
 
-def disc_fits(free, r):
-    """Cells where a disc of r cells around the cell covers only free cells, inside the map."""
-    h, w = free.shape
-    fits = numpy.zeros_like(free)
-    fits[r:h - r, r:w - r] = True
-    for dy in range(-r, r + 1):
-        for dx in range(-r, r + 1):
-            if dx * dx + dy * dy <= r * r:
-                shifted = numpy.ones_like(free)
-                ys, yd = (slice(0, h - dy), slice(dy, h)) if dy >= 0 else (slice(-dy, h), slice(0, h + dy))
-                xs, xd = (slice(0, w - dx), slice(dx, w)) if dx >= 0 else (slice(-dx, w), slice(0, w + dx))
-                shifted[ys, xs] = free[yd, xd]
-                fits &= shifted
-    return fits
-
-
-def regions(fits):
-    """4-connected regions of `fits`: a label per cell (-1 outside) and each region's cells."""
-    h, w = fits.shape
-    label = numpy.full(fits.shape, -1, dtype=numpy.int64)
-    cells = []
-    for y0, x0 in zip(*numpy.nonzero(fits)):
-        if label[y0, x0] >= 0:
-            continue
-        k, members, queue = len(cells), [], deque([(int(y0), int(x0))])
-        label[y0, x0] = k
-        while queue:
-            y, x = queue.popleft()
-            members.append((x, y))
-            for ny, nx in ((y + 1, x), (y - 1, x), (y, x + 1), (y, x - 1)):
-                if 0 <= ny < h and 0 <= nx < w and fits[ny, nx] and label[ny, nx] < 0:
-                    label[ny, nx] = k
-                    queue.append((ny, nx))
-        cells.append(members)
-    return label, cells
-
-
 def main(argv=None):
     p = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     p.add_argument("--map", required=True)
@@ -111,37 +62,19 @@ def main(argv=None):
     grid = load_map(args.map)
     fleet = load_fleet(args.fleet)
     rng = random.Random(args.seed)
-    w, h, res = grid.width, grid.height, grid.resolution
-    free = numpy.array(grid.data, dtype=numpy.int64).reshape(h, w) == 0
-    fit_regions = {}  # radius -> (label, cells)
-
-    def draw(r, taken, region):
-        """A cell of `region` (None: anywhere the disc fits) clear of `taken`, or None."""
-        label, cells = fit_regions[r]
-        for _ in range(20000):
-            if region is None:
-                x, y = rng.randrange(w), rng.randrange(h)
-                if label[y, x] < 0:
-                    continue
-            else:
-                x, y = rng.choice(cells[region])
-            if not any((x - ox) ** 2 + (y - oy) ** 2 < (r + orr) ** 2 for ox, oy, orr in taken):
-                return x, y
-        return None
-
+    res = grid.resolution
+    sampler = PoseSampler(grid, rng)
     robots, taken = [], {"start": [], "target": []}
     for i in range(args.robots):
         footprint = fleet[i % len(fleet)]
-        r = int(math.ceil(reach(footprint) / res + 0.5))
-        if r not in fit_regions:
-            fit_regions[r] = regions(disc_fits(free, r))
-        label = fit_regions[r][0]
+        r = sampler.radius(footprint)
         pose = None
         for _ in range(200):
-            start = draw(r, taken["start"], None)
+            start = sampler.draw(footprint, taken["start"])
             if start is None:
                 break
-            target = draw(r, taken["target"], None if args.any_target else label[start[1], start[0]])
+            region = None if args.any_target else sampler.region_of(footprint, start)
+            target = sampler.draw(footprint, taken["target"], region)
             if target is not None:
                 pose = {end: (x, y) + pose_yaw(rng.uniform(-math.pi, math.pi), args.grid_headings)
                         for end, (x, y) in (("start", start), ("target", target))}

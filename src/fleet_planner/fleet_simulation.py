@@ -58,6 +58,8 @@ class FleetSimulation:
         self.robots = {}
         self.uncoordinated = uncoordinated
         self.stops = 0  # random stops so far
+        self.clock = 0.0
+        self.scheduled = []  # (time, robot id, seconds): stops to come, by time
 
     def add(self, robot_id, pose):
         self.robots[robot_id] = SimulatedRobot(robot_id, pose)
@@ -83,7 +85,20 @@ class FleetSimulation:
         robot = self.robots[robot_id]
         robot.stopped_for = max(robot.stopped_for, seconds)
 
+    def schedule_stops(self, count, within, seconds):
+        """`count` stops of `seconds`, each of a random robot at a random time in the next
+        `within` seconds (a person in the way, a door to open)."""
+        ids = sorted(self.robots)
+        for _ in range(count if ids else 0):
+            self.scheduled.append((self.clock + self.rng.uniform(0.0, within), self.rng.choice(ids), seconds))
+        self.scheduled.sort()
+
     def advance(self, dt):
+        self.clock += dt
+        while self.scheduled and self.scheduled[0][0] <= self.clock:
+            _, robot_id, seconds = self.scheduled.pop(0)
+            self.hold(robot_id, seconds)
+            self.stops += 1
         for robot_id in sorted(self.robots):
             self._advance(self.robots[robot_id], dt)
 

@@ -76,6 +76,17 @@ class DrivesReleasedSteps(unittest.TestCase):
         run(sim, 2.6)
         self.assertTrue(sim.robots["a"].arrived())
 
+    def test_scheduled_stops_hold_robots_within_the_horizon(self):
+        sim = FleetSimulation(1.0, seed=2)
+        sim.follow({"a": LINE, "b": list(reversed(LINE))})
+        sim.schedule_stops(3, 2.0, 10.0)
+        sim.release("a", 4)
+        sim.release("b", 4)
+        run(sim, 2.05)
+        self.assertEqual(sim.stops, 3)
+        run(sim, 3.0)  # each robot is held at least once for 10 s: neither has arrived
+        self.assertFalse(sim.robots["a"].arrived() and sim.robots["b"].arrived())
+
     def test_yaw_turns_the_shorter_way(self):
         pose = lerp_pose((0, 0, 3.0), (0, 0, -3.0), 0.5)
         self.assertAlmostEqual(abs(pose[2]), math.pi, places=6)

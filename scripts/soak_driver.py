@@ -1,0 +1,282 @@
+#!/usr/bin/python3
+"""soak_driver: the rounds of scripts/fleet_soak, which runs it inside its ROS environment.
+
+Usage (through scripts/fleet_soak): --map MAP.yaml --fleet FLEET.yaml --robots N --rounds R
+    --seed S --slowdown F --stops K [--seconds-per-step 0.1] [--time-limit 30]
+    [--round-timeout 600] [--uncoordinated] [--json-out FILE]
+
+The fleet: N robots named <fleet id>_<k>, taking the fleet file's footprints in turn. They start
+at random free poses (fleet_planner.pose_sampling). Each round draws a new goal for every robot
+(a random free pose at a random yaw that the robot can reach alone from where it stands), plans
+the whole fleet from TF (start_from_tf) and waits until the execution reports every robot
+arrived. The fleet simulator makes each step up to F slower and holds K random robots for 2 s
+during each plan. A plan that fails gets new goals (up to 3 draws per round).
+
+Prints a line per round, then one JSON line: collisions (pairs of robots seen sharing a cell, the
+planner's monitor), goals_reached, goals_total, deadlocks (rounds not finished within
+--round-timeout), replans (plans made), plan_failures, replan_p50_s and replan_p95_s (plan call
+latency), rss_mb_first (the planner's resident memory after the first round), rss_mb_last,
+rss_growth (last / first - 1), wall_s. Exit status 1 on a collision or a deadlock.
+"""
+import argparse
+import json
+import math
+import os
+import random
+import signal
+import subprocess
+import sys
+import threading
+import time
+import xmlrpc.client
+
+import rospy
+import tf2_ros
+from geometry_msgs.msg import Pose2D
+
+# The package's devel space (scripts/fleet_soak sources it): messages and the Python helpers.
+from fleet_planner.fleet_config import load_fleet
+from fleet_planner.map_yaml import load_map
+from fleet_planner.msg import FleetExecution, RobotExecution, RobotTask
+from fleet_planner.pose_sampling import PoseSampler
+from fleet_planner.srv import PlanFleet, PlanFleetRequest, PlanFleetResponse
+
+STOP_SECONDS = 2.0
+
+
+def fleet_yaml(robots):
+    """A fleet file for (id, footprint) pairs (padding already applied)."""
+    lines = ["robots:"]
+    for robot_id, f in robots:
+        lines.append("  - id: %s" % robot_id)
+        if f.kind == "circle":
+            lines.append("    robot_radius: %.6f" % f.radius)
+        elif f.kind == "block":
+            lines.append("    block: {min_x: %.6f, max_x: %.6f, min_y: %.6f, max_y: %.6f}"
+                         % (f.min_x, f.max_x, f.min_y, f.max_y))
+        else:
+            lines.append("    footprint: [%s]" % ", ".join("[%.6f, %.6f]" % p for p in f.points))
+    return "\n".join(lines) + "\n"
+
+
+def tasks_yaml(poses):
+    lines = ["tasks:"]
+    for robot_id, (x, y, yaw) in poses:
+        lines += ["  - id: %s" % robot_id, "    start: [%.6f, %.6f, %.6f]" % (x, y, yaw),
+                  "    goal: [%.6f, %.6f, %.6f]" % (x, y, yaw)]
+    return "\n".join(lines) + "\n"
+
+
+def launch_xml(args, folder):
+    return """<launch>
+  <node pkg="fleet_planner" type="map_server" name="map_server" args="{map}"/>
+  <node pkg="fleet_planner" type="footprint_registry" name="footprint_registry" args="{folder}/fleet.yaml"/>
+  <include file="$(find fleet_planner)/launch/planner.launch">
+    <arg name="execute" value="true"/>
+    <arg name="seconds_per_step" value="{sps}"/>
+    <arg name="output" value="log"/>
+  </include>
+  <node pkg="fleet_planner" type="fleet_simulator" name="fleet_simulator">
+    <param name="tasks_file" value="{folder}/starts.yaml"/>
+    <param name="rate" value="50"/>
+    <param name="slowdown" value="{slowdown}"/>
+    <param name="stops_per_plan" value="{stops}"/>
+    <param name="stop_seconds" value="{stop_seconds}"/>
+    <param name="seed" value="{seed}"/>
+    <param name="uncoordinated" value="{uncoordinated}"/>
+  </node>
+</launch>
+""".format(map=os.path.abspath(args.map), folder=folder, sps=args.seconds_per_step, slowdown=args.slowdown,
+           stops=args.stops, stop_seconds=STOP_SECONDS, seed=args.seed,
+           uncoordinated="true" if args.uncoordinated else "false")
+
+
+def rss_mb(node):
+    """Resident memory of a ROS node (MB), from its pid through the master."""
+    try:
+        master = xmlrpc.client.ServerProxy(os.environ["ROS_MASTER_URI"])
+        _, _, uri = master.lookupNode("/fleet_soak", node)
+        _, _, pid = xmlrpc.client.ServerProxy(uri).getPid("/fleet_soak")
+        with open("/proc/%d/status" % pid) as f:
+            for line in f:
+                if line.startswith("VmRSS:"):
+                    return int(line.split()[1]) / 1024.0
+    except (OSError, KeyError, ValueError, xmlrpc.client.Error):
+        pass
+    return None
+
+
+def percentile(values, q):
+    if not values:
+        return None
+    ordered = sorted(values)
+    return ordered[min(len(ordered) - 1, int(math.ceil(q * len(ordered))) - 1)]
+
+
+class Soak:
+    def __init__(self, args):
+        self.args = args
+        self.rng = random.Random(args.seed)
+        self.grid = load_map(args.map)
+        self.sampler = PoseSampler(self.grid, self.rng)
+        types = load_fleet(args.fleet)
+        self.robots = [("%s_%d" % (types[k % len(types)].robot_id, k), types[k % len(types)])
+                       for k in range(args.robots)]
+        self.last = None
+        self.lock = threading.Lock()
+
+    def draw_starts(self):
+        taken, poses = [], []
+        for robot_id, f in self.robots:
+            cell = self.sampler.draw(f, taken)
+            if cell is None:
+                raise SystemExit("fleet_soak: no room for robot %s" % robot_id)
+            taken.append(cell + (self.sampler.radius(f),))
+            poses.append((robot_id, self.sampler.metres(cell, self.rng.uniform(-math.pi, math.pi))))
+        return poses
+
+    def draw_goals(self, here):
+        """A goal per robot that it can reach alone from `here` (robot id -> (x, y)), clear of the others'."""
+        taken, goals = [], {}
+        for robot_id, f in self.robots:
+            region = self.sampler.region_of(f, self.sampler.cell_of(*here[robot_id]))
+            cell = self.sampler.draw(f, taken, region)
+            if cell is None:
+                cell = self.sampler.draw(f, taken)
+            if cell is None:
+                return None
+            taken.append(cell + (self.sampler.radius(f),))
+            goals[robot_id] = self.sampler.metres(cell, self.rng.uniform(-math.pi, math.pi))
+        return goals
+
+    def on_execution(self, msg):
+        with self.lock:
+            self.last = msg
+
+    def current(self, tf):
+        here = {}
+        for robot_id, _ in self.robots:
+            t = tf.lookup_transform("map", robot_id + "/base_link", rospy.Time(0), rospy.Duration(10))
+            here[robot_id] = (t.transform.translation.x, t.transform.translation.y)
+        return here
+
+    def wait_done(self, after_plan):
+        deadline = time.monotonic() + self.args.round_timeout
+        while time.monotonic() < deadline and not rospy.is_shutdown():
+            with self.lock:
+                last = self.last
+            if last is not None and last.plan > after_plan and last.done:
+                return last, True
+            time.sleep(0.1)
+        with self.lock:
+            return self.last, False
+
+
+def main(argv=None):
+    p = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    p.add_argument("--map", required=True)
+    p.add_argument("--fleet", required=True)
+    p.add_argument("--robots", type=int, required=True)
+    p.add_argument("--rounds", type=int, default=10)
+    p.add_argument("--seed", type=int, default=1)
+    p.add_argument("--slowdown", type=float, default=0.5)
+    p.add_argument("--stops", type=int, default=5)
+    p.add_argument("--seconds-per-step", type=float, default=0.1)
+    p.add_argument("--time-limit", type=float, default=30.0)
+    p.add_argument("--round-timeout", type=float, default=600.0)
+    p.add_argument("--uncoordinated", action="store_true", help="the simulator ignores the releases")
+    p.add_argument("--json-out", default="")
+    args = p.parse_args(argv)
+    started = time.monotonic()
+    soak = Soak(args)
+    folder = os.environ["ROS_HOME"]
+    with open(os.path.join(folder, "fleet.yaml"), "w") as f:
+        f.write(fleet_yaml(soak.robots))
+    with open(os.path.join(folder, "starts.yaml"), "w") as f:
+        f.write(tasks_yaml(soak.draw_starts()))
+    with open(os.path.join(folder, "soak.launch"), "w") as f:
+        f.write(launch_xml(args, folder))
+    log = open(os.path.join(folder, "launch.log"), "w")
+    launch = subprocess.Popen(["roslaunch", "-p", os.environ["FLEET_SOAK_PORT"], os.path.join(folder, "soak.launch")],
+                              stdout=log, stderr=subprocess.STDOUT, start_new_session=True)
+    try:
+        return run(soak, args, started)
+    finally:
+        try:
+            os.killpg(launch.pid, signal.SIGINT)
+            launch.wait(timeout=15)
+        except (OSError, subprocess.TimeoutExpired):
+            os.killpg(launch.pid, signal.SIGKILL)
+
+
+def run(soak, args, started):
+    deadline = time.monotonic() + 60
+    while True:  # the master comes up with roslaunch
+        try:
+            xmlrpc.client.ServerProxy(os.environ["ROS_MASTER_URI"]).getSystemState("/fleet_soak")
+            break
+        except OSError:
+            if time.monotonic() > deadline:
+                raise SystemExit("fleet_soak: no ROS master")
+            time.sleep(0.3)
+    rospy.init_node("fleet_soak", disable_signals=True)
+    rospy.Subscriber("/fleet_planner/execution", FleetExecution, soak.on_execution, queue_size=10)
+    tf = tf2_ros.Buffer()
+    tf2_ros.TransformListener(tf)
+    rospy.wait_for_service("/fleet_planner/plan_fleet", timeout=60)
+    plan = rospy.ServiceProxy("/fleet_planner/plan_fleet", PlanFleet)
+    totals = dict(collisions=0, goals_reached=0, goals_total=0, deadlocks=0, replans=0, plan_failures=0)
+    latencies, rss_first, plans_done = [], None, 0
+    for rnd in range(1, args.rounds + 1):
+        here = soak.current(tf)
+        response = None
+        for _ in range(3):
+            goals = soak.draw_goals(here)
+            if goals is None:
+                continue
+            tasks = [RobotTask(robot_id=r, start_from_tf=True, goal=Pose2D(*goals[r])) for r, _ in soak.robots]
+            request = PlanFleetRequest(tasks=tasks, time_limit=args.time_limit, seed=rnd)
+            for _ in range(100):  # the map and the registry reach the planner asynchronously
+                t0 = time.monotonic()
+                response = plan(request)
+                if response.status not in (PlanFleetResponse.NO_MAP, PlanFleetResponse.UNKNOWN_ROBOT):
+                    break
+                time.sleep(0.3)
+            latencies.append(time.monotonic() - t0)
+            totals["replans"] += 1
+            if response.status == PlanFleetResponse.SUCCESS:
+                break
+            totals["plan_failures"] += 1
+            print("round %d: plan failed: %s" % (rnd, response.message[:200]), flush=True)
+        if response is None or response.status != PlanFleetResponse.SUCCESS:
+            continue
+        t1 = time.monotonic()
+        last, done = soak.wait_done(plans_done)
+        plans_done = last.plan if last is not None else plans_done
+        arrived = sum(r.state == RobotExecution.ARRIVED for r in last.robots) if last else 0
+        totals["goals_total"] += len(soak.robots)
+        totals["goals_reached"] += arrived
+        totals["collisions"] += last.collisions if last else 0
+        totals["deadlocks"] += 0 if done else 1
+        rss = rss_mb("/fleet_planner")
+        rss_first = rss if rss_first is None else rss_first
+        print("round %d/%d: planned in %.2f s, executed in %.1f s: %d/%d arrived, %d collisions%s, planner RSS %s MB"
+              % (rnd, args.rounds, latencies[-1], time.monotonic() - t1, arrived, len(soak.robots),
+                 last.collisions if last else 0, "" if done else ", NOT DONE", "%.1f" % rss if rss else "?"),
+              flush=True)
+    rss_last = rss_mb("/fleet_planner")
+    result = dict(totals, robots=len(soak.robots), rounds=args.rounds,
+                  replan_p50_s=percentile(latencies, 0.5), replan_p95_s=percentile(latencies, 0.95),
+                  rss_mb_first=rss_first, rss_mb_last=rss_last,
+                  rss_growth=(rss_last / rss_first - 1.0) if rss_first and rss_last else None,
+                  wall_s=time.monotonic() - started)
+    line = json.dumps(result, sort_keys=True)
+    print(line, flush=True)
+    if args.json_out:
+        with open(args.json_out, "w") as f:
+            f.write(line + "\n")
+    return 1 if totals["collisions"] or totals["deadlocks"] else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
