@@ -258,6 +258,12 @@ def run(soak, args, started):
         totals["goals_reached"] += arrived
         totals["collisions"] += last.collisions if last else 0
         totals["deadlocks"] += 0 if done else 1
+        if not done and last is not None:
+            for r in last.robots:
+                if r.state != RobotExecution.ARRIVED:
+                    print("  not arrived: %s state %d progress %d/%d released %d blocked by '%s' late %.1f s"
+                          % (r.robot_id, r.state, r.progress, r.last_state, r.released, r.blocked_by, r.lateness),
+                          flush=True)
         rss = rss_mb("/fleet_planner")
         rss_first = rss if rss_first is None else rss_first
         print("round %d/%d: planned in %.2f s, executed in %.1f s: %d/%d arrived, %d collisions%s, planner RSS %s MB"

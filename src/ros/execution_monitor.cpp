@@ -39,6 +39,10 @@ void ExecutionMonitor::start(ExecutablePlan plan, double seconds_per_step, const
   const std::size_t count = dependencies.count();
   tracker_ = std::make_unique<ExecutionTracker>(plan.plan, std::move(dependencies));
   plan_ = std::move(plan);
+  matchers_.clear();
+  for (const auto& poses : plan_.poses) {
+    matchers_.emplace_back(poses, settings_.position_tolerance, settings_.heading_tolerance);
+  }
   ids_.clear();
   for (const Robot& r : plan_.instance.robots) ids_.push_back(r.id);
   message_ = fleet_planner::FleetExecution();
@@ -56,27 +60,13 @@ void ExecutionMonitor::start(ExecutablePlan plan, double seconds_per_step, const
   touching_.clear();
 }
 
+int ExecutionMonitor::released(int robot) const {
+  return matchers_[robot].releaseCap(tracker_->progress(robot), tracker_->releasedUpTo(robot));
+}
+
 int ExecutionMonitor::progressFrom(int robot, const geometry_msgs::Pose2D& pose) const {
-  const auto& states = plan_.poses[robot];
-  const double tol = settings_.position_tolerance, yaw_tol = settings_.heading_tolerance;
-  auto at = [&](const geometry_msgs::Pose2D& s) {
-    return std::hypot(pose.x - s.x, pose.y - s.y) <= tol && std::abs(wrapAngle(pose.theta - s.theta)) <= yaw_tol;
-  };
-  // On the way from a to b: near the segment between them, and turned part of the way between
-  // their yaws (the shorter way). A robot seen there has reached a, even if no sample caught it
-  // at a itself.
-  auto between = [&](const geometry_msgs::Pose2D& a, const geometry_msgs::Pose2D& b) {
-    const double dx = b.x - a.x, dy = b.y - a.y, len2 = dx * dx + dy * dy;
-    const double f = len2 > 0 ? std::clamp(((pose.x - a.x) * dx + (pose.y - a.y) * dy) / len2, 0.0, 1.0) : 0.0;
-    if (std::hypot(pose.x - (a.x + f * dx), pose.y - (a.y + f * dy)) > tol) return false;
-    const double turn = wrapAngle(b.theta - a.theta), turned = wrapAngle(pose.theta - a.theta);
-    return turn >= 0 ? turned >= -yaw_tol && turned <= turn + yaw_tol : turned <= yaw_tol && turned >= turn - yaw_tol;
-  };
-  const int released = tracker_->releasedUpTo(robot);
-  for (int k = released; k > tracker_->progress(robot); --k) {
-    if (at(states[k]) || (k < released && between(states[k], states[k + 1]))) return k;
-  }
-  return tracker_->progress(robot);
+  const int k = matchers_[robot].match(pose, tracker_->progress(robot), released(robot));
+  return k < 0 ? tracker_->progress(robot) : k;
 }
 
 std::set<std::pair<int, int>> ExecutionMonitor::overlaps(
@@ -120,8 +110,17 @@ fleet_planner::FleetExecution ExecutionMonitor::update(const std::vector<std::op
   }
   // Overlaps: a pair counts once per contact, however long it lasts.
   const auto touching = overlaps(poses);
+  new_contacts_.clear();
+  auto describe = [&](int i) {
+    const auto& p = *poses[i];
+    return "'" + ids_[i] + "' at (" + std::to_string(p.x) + ", " + std::to_string(p.y) + ", " + std::to_string(p.theta) +
+           "), state " + std::to_string(tracker_->progress(i)) + " of " + std::to_string(tracker_->lastState(i)) +
+           ", released " + std::to_string(released(i));
+  };
   for (const auto& pair : touching) {
-    if (!touching_.count(pair)) ++message_.collisions;
+    if (touching_.count(pair)) continue;
+    ++message_.collisions;
+    new_contacts_.push_back(describe(pair.first) + " and " + describe(pair.second));
   }
   touching_ = touching;
 
@@ -129,10 +128,11 @@ fleet_planner::FleetExecution ExecutionMonitor::update(const std::vector<std::op
   for (int i = 0; i < n; ++i) {
     auto& r = message_.robots[i];
     r.progress = tracker_->progress(i);
-    r.released = tracker_->releasedUpTo(i);
+    r.released = released(i);
     r.next_waypoint = plan_.poses[i][std::min<int>(r.released, r.progress + 1)];
     const auto holder = tracker_->blockedBy(i);
-    r.blocked_by = holder && r.released == r.progress ? ids_[holder->robot] : "";
+    const bool held = tracker_->releasedUpTo(i) == static_cast<int>(r.progress);  // not merely not yet released
+    r.blocked_by = holder && held ? ids_[holder->robot] : "";
     const int next = std::min<int>(r.progress + 1, r.last_state);
     r.lateness = tracker_->done(i) ? 0.0 : std::max(0.0, elapsed - next * message_.seconds_per_step);
     if (tracker_->done(i)) {

@@ -66,6 +66,7 @@ void ExecutionRunner::onTimer(const ros::TimerEvent&) {
     for (const std::string& id : monitor_.robotIds()) poses.push_back(poseOf(id));
     const ros::Time now = ros::Time::now();
     const fleet_planner::FleetExecution execution = monitor_.update(poses, now);
+    for (const std::string& contact : monitor_.newContacts()) ROS_WARN("fleet_planner: execution: contact: %s", contact.c_str());
     execution_pub_.publish(execution);
     for (const auto& robot : execution.robots) {
       auto sent = last_sent_.find(robot.robot_id);

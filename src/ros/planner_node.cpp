@@ -2,6 +2,9 @@
 
 #include <chrono>
 #include <cstdio>
+#ifdef __GLIBC__
+#include <malloc.h>
+#endif
 
 #include <tf2/LinearMath/Quaternion.h>
 #include <tf2/utils.h>
@@ -124,6 +127,11 @@ bool PlannerNode::onPlanFleet(fleet_planner::PlanFleet::Request& request, fleet_
     ROS_INFO("fleet_planner: %zu robots: %s: %s (%.2f s)", request.tasks.size(), fleetStatusName(r.status).c_str(),
              r.message.c_str(), r.statistics.total_time);
     publish(call);
+#ifdef __GLIBC__
+    // Planning frees hundreds of MB in the worker threads' arenas: give them back to the system,
+    // so that a node that plans all day does not keep its largest call's peak.
+    malloc_trim(0);
+#endif
   } catch (const std::exception& e) {
     response.status = Response::INTERNAL_ERROR;
     response.message = std::string("internal error: ") + e.what();

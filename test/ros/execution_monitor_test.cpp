@@ -5,6 +5,7 @@
 #include <diagnostic_msgs/DiagnosticStatus.h>
 #include <fleet_planner/RobotExecution.h>
 
+#include "fleet_planner/ros/conversions.h"
 #include "fleet_planner/ros/execution_monitor.h"
 #include "ros_test_util.h"
 
@@ -155,6 +156,46 @@ TEST_F(ExecutionMonitorTest, MissingPosesAndLongWaitsAreReported) {
     const auto diagnostics = executionDiagnostics(e, settings, ros::Time(t + 60.0));
     EXPECT_EQ(diagnostics.status[1 + held].level, diagnostic_msgs::DiagnosticStatus::ERROR);
   }
+}
+
+}  // namespace
+}  // namespace fleet_planner::test
+
+namespace fleet_planner::test {
+namespace {
+
+// A path that comes back to a pose: turn to +y, turn back, then move. Standing at the start,
+// the robot matches state 2 as well as state 0: its progress must stay 0, or the robots that
+// wait for it would be let into cells it has not left.
+TEST(ExecutionMonitorProgress, APoseTheRobotComesBackToIsNotTakenForTheLaterState) {
+  ExecutablePlan plan;
+  const auto grid = occupancyGrid(10, 10, 0.5, 0.0, 0.0);
+  plan.map = std::make_shared<GridMap>(convert(grid, OccupancyPolicy{}));
+  Robot robot;
+  robot.id = "tug";
+  robot.footprint = Footprint::block(-0.6, -0.4, 0.6, 0.4);
+  robot.start = {3, 3, 0};
+  robot.target = {4, 3, 0};
+  plan.instance.robots = {robot};
+  plan.plan.paths = {{{3, 3, 0}, {3, 3, 2}, {3, 3, 0}, {4, 3, 0}}};
+  plan.poses.emplace_back();
+  for (const GridPose& s : plan.plan.paths[0]) plan.poses[0].push_back(toPose2D(*plan.map, s));
+  ExecutionMonitor monitor(ExecutionSettings{});
+  monitor.start(plan, 0.5, "map", ros::Time(100));
+  Poses poses = {plan.poses[0][0]};
+  EXPECT_EQ(monitor.update(poses, ros::Time(100)).robots[0].progress, 0u);
+  poses[0]->theta = 0.8;  // turning to +y: on the way from state 0 to 1
+  EXPECT_EQ(monitor.update(poses, ros::Time(101)).robots[0].progress, 0u);
+  poses[0] = plan.poses[0][1];
+  EXPECT_EQ(monitor.update(poses, ros::Time(102)).robots[0].progress, 1u);
+  poses[0] = plan.poses[0][2];
+  EXPECT_EQ(monitor.update(poses, ros::Time(103)).robots[0].progress, 2u);
+  poses[0]->x += 0.25;  // halfway to state 3
+  EXPECT_EQ(monitor.update(poses, ros::Time(104)).robots[0].progress, 2u);
+  poses[0] = plan.poses[0][3];
+  const auto end = monitor.update(poses, ros::Time(105));
+  EXPECT_EQ(end.robots[0].progress, 3u);
+  EXPECT_TRUE(end.done);
 }
 
 }  // namespace

@@ -4,8 +4,8 @@
 /// lateness, robots waiting too long, and overlaps of the robots' footprints as they really
 /// stand. No ROS master needed: the node feeds it poses and times, gtest does the same.
 ///
-/// A robot has reached plan state k when its pose is within the tolerances of that state's pose;
-/// progress only goes forward, and only through released states. Robots that stand still are
+/// A robot's progress comes from its pose (ProgressMatcher: within the tolerances of a state, or
+/// on its way to the next); it only goes forward, and only through released states. Robots that stand still are
 /// never moved on: a robot that falls behind holds those that must wait for it, nobody else.
 #include <map>
 #include <memory>
@@ -22,6 +22,7 @@
 
 #include "fleet_planner/execution/execution_tracker.h"
 #include "fleet_planner/ros/fleet_planning_service.h"
+#include "fleet_planner/ros/progress_matching.h"
 
 namespace fleet_planner {
 
@@ -41,6 +42,9 @@ class ExecutionMonitor {
   bool running() const { return tracker_ != nullptr; }
   /// The running plan's robot ids, in plan order.
   const std::vector<std::string>& robotIds() const { return ids_; }
+  /// The contacts that began at the last update, described ("'a' (state 4 of 30, released 5) and
+  /// 'b' (...) share cell (12, 40)"): for the log.
+  const std::vector<std::string>& newContacts() const { return new_contacts_; }
   /// Requirements between the running plan's steps (FleetExecution::dependencies).
   std::uint32_t dependencies() const { return message_.dependencies; }
 
@@ -51,16 +55,21 @@ class ExecutionMonitor {
 
  private:
   int progressFrom(int robot, const geometry_msgs::Pose2D& pose) const;
+  /// What the robot may drive through now: the dependencies' release, capped where its pose
+  /// would be ambiguous (ProgressMatcher::releaseCap).
+  int released(int robot) const;
   /// Pairs of robots (i < j) whose footprints at their poses share a map cell.
   std::set<std::pair<int, int>> overlaps(const std::vector<std::optional<geometry_msgs::Pose2D>>& poses) const;
 
   ExecutionSettings settings_;
   ExecutablePlan plan_;
   std::unique_ptr<ExecutionTracker> tracker_;
+  std::vector<ProgressMatcher> matchers_;  ///< per robot
   std::vector<std::string> ids_;
   fleet_planner::FleetExecution message_;
   std::vector<ros::Time> waiting_since_;  ///< when each robot last stood at its release (zero: driving)
   std::set<std::pair<int, int>> touching_;  ///< overlapping pairs at the last update
+  std::vector<std::string> new_contacts_;
   std::uint32_t plans_ = 0;
 };
 
