@@ -62,6 +62,33 @@ Footprint randomFootprint(Rng& rng, bool circle, const GeneratorOptions& o) {
 
 }  // namespace
 
+bool placeRobot(const FleetGraphs& graphs, Instance& instance, int robot, const std::vector<bool>& others,
+                Rng& rng, int attempts) {
+  const StateGraph& g = graphs.graph(robot);
+  const FootprintCells& cells = graphs.cells(robot);
+  auto clashes = [&](const GridPose& pose, bool with_starts) {
+    for (std::size_t j = 0; j < others.size(); ++j) {
+      if (!others[j]) continue;
+      const Robot& other = instance.robots[j];
+      if (footprintsOverlap(cells, pose, graphs.cells(j), with_starts ? other.start : other.target)) return true;
+    }
+    return false;
+  };
+  for (int attempt = 0; attempt < attempts; ++attempt) {
+    const StateId s = static_cast<StateId>(rng.uniformInt(0, g.stateIdCount() - 1));
+    if (!g.valid(s) || clashes(g.pose(s), true)) continue;
+    const std::vector<StateId> reachable = reachableFrom(g, s);
+    for (int tries = 0; tries < 50; ++tries, ++attempt) {
+      const StateId t = reachable[rng.uniformInt(0, static_cast<std::int64_t>(reachable.size()) - 1)];
+      if (t == s || clashes(g.pose(t), false)) continue;
+      instance.robots[robot].start = g.pose(s);
+      instance.robots[robot].target = g.pose(t);
+      return true;
+    }
+  }
+  return false;
+}
+
 Instance generateInstance(const GridMap& map, const GeneratorOptions& options) {
   if (options.robots < 0) throw InvalidInput("generator: number of robots must not be negative");
   if (!(options.polygon_share >= 0 && options.polygon_share <= 1)) {
@@ -72,40 +99,19 @@ Instance generateInstance(const GridMap& map, const GeneratorOptions& options) {
   std::vector<Footprint> footprints;
   for (int i = 0; i < options.robots; ++i) footprints.push_back(randomFootprint(rng, i % 2 == 0, options));
   const FleetGraphs graphs(map, footprints, options.model);
-
+  std::vector<bool> placed(options.robots, false);  // the robots placed so far
   for (int i = 0; i < options.robots; ++i) {
-    const StateGraph& g = graphs.graph(i);
-    const FootprintCells& cells = graphs.cells(i);
-    auto clashes = [&](const GridPose& pose, bool with_starts) {
-      for (int j = 0; j < i; ++j) {
-        const Robot& other = instance.robots[j];
-        if (footprintsOverlap(cells, pose, graphs.cells(j), with_starts ? other.start : other.target)) return true;
-      }
-      return false;
-    };
     Robot robot;
     robot.id = std::to_string(i);
     robot.footprint = footprints[i];
-    bool placed = false;
-    for (int attempt = 0; attempt < options.attempts_per_robot && !placed; ++attempt) {
-      const StateId s = static_cast<StateId>(rng.uniformInt(0, g.stateIdCount() - 1));
-      if (!g.valid(s) || clashes(g.pose(s), true)) continue;
-      const std::vector<StateId> reachable = reachableFrom(g, s);
-      for (int tries = 0; tries < 50 && !placed; ++tries, ++attempt) {
-        const StateId t = reachable[rng.uniformInt(0, static_cast<std::int64_t>(reachable.size()) - 1)];
-        if (t == s || clashes(g.pose(t), false)) continue;
-        robot.start = g.pose(s);
-        robot.target = g.pose(t);
-        placed = true;
-      }
-    }
-    if (!placed) {
+    instance.robots.push_back(std::move(robot));
+    if (!placeRobot(graphs, instance, i, placed, rng, options.attempts_per_robot)) {
       throw InvalidInput("generator: could not place robot " + std::to_string(i) + " (" +
                          footprints[i].describe() + ") on " +
                          (map.source().empty() ? std::string("the map") : map.source()) + " after " +
                          std::to_string(options.attempts_per_robot) + " attempts");
     }
-    instance.robots.push_back(std::move(robot));
+    placed[i] = true;
   }
   return instance;
 }

@@ -3,7 +3,9 @@
 #include <filesystem>
 
 #include "cli_common.h"
+#include "fleet_planner/infeasibility/feasible_instances.h"
 #include "fleet_planner/io/instance_generator.h"
+#include "fleet_planner/layered/time_budget.h"
 #include "fleet_planner/io/instance_io.h"
 #include "fleet_planner/io/map_io.h"
 
@@ -15,6 +17,9 @@ void addGenerateCommand(CLI::App& app) {
     std::string map, out;
     GeneratorOptions gen;
     bool backward = false;
+    bool feasible = false;
+    int max_rounds = 10;
+    double check_time = 300.0;
   };
   auto o = std::make_shared<Options>();
   cmd->add_option("--map", o->map, "map: MovingAI .map or map_server .yaml")->required();
@@ -22,12 +27,25 @@ void addGenerateCommand(CLI::App& app) {
   cmd->add_option("--seed", o->gen.seed, "random seed (same seed, same instance)");
   cmd->add_option("--out", o->out, "scenario file to write (.yaml)")->required();
   cmd->add_flag("--backward", o->backward, "graphs allow moving backward (for reachability)");
+  cmd->add_flag("--feasible", o->feasible,
+                "draw again the robots of pairs proven unable to reach both targets (the planner's pair proofs "
+                "on the decomposition's entangled pairs), until none is proven so; JSON lists them");
+  cmd->add_option("--max-rounds", o->max_rounds, "--feasible: checks at most (default 10)")->check(CLI::PositiveNumber);
+  cmd->add_option("--check-time-limit", o->check_time, "--feasible: seconds for the checks (default 300)")
+      ->check(CLI::PositiveNumber);
   cmd->callback([o] {
     namespace fs = std::filesystem;
     const auto t0 = std::chrono::steady_clock::now();
     const GridMap map = loadMap(o->map);
     o->gen.model.allow_backward = o->backward;
-    Instance instance = generateInstance(map, o->gen);
+    FeasibleGeneration generated;
+    if (o->feasible) {
+      generated = generateFeasibleInstance(map, o->gen, o->max_rounds, TimeBudget{}.pair_proof_expansions,
+                                           Deadline::in(o->check_time));
+    } else {
+      generated.instance = generateInstance(map, o->gen);
+    }
+    Instance& instance = generated.instance;
     // The scenario names its map relative to its own folder.
     const fs::path out_dir = fs::absolute(o->out).parent_path();
     const std::string map_ref = fs::relative(fs::absolute(o->map), out_dir).generic_string();
@@ -37,7 +55,11 @@ void addGenerateCommand(CLI::App& app) {
                    {"seed", o->gen.seed},
                    {"out", o->out},
                    {"map", map_ref},
-                   {"time_s", secondsSince(t0)}});
+                   {"time_s", secondsSince(t0)},
+                   {"feasible_check", o->feasible},
+                   {"check_rounds", generated.rounds},
+                   {"check_clean", generated.clean},
+                   {"redrawn", generated.redrawn}});
   });
 }
 

@@ -11,7 +11,11 @@
 /// every footprint kind. At 0 (the default) the instances are exactly the paper's.
 #include <cstdint>
 
+#include <vector>
+
 #include "fleet_planner/model/action.h"
+#include "fleet_planner/model/fleet_graphs.h"
+#include "fleet_planner/runtime/random.h"
 #include "fleet_planner/model/grid_map.h"
 #include "fleet_planner/model/instance.h"
 
@@ -31,5 +35,11 @@ struct GeneratorOptions {
 /// Robots alternate circle, block (or polygon), circle, ... and are named "0", "1", ... Throws InvalidInput
 /// naming the robot when one cannot be placed within its attempts (map too full or too tight).
 Instance generateInstance(const GridMap& map, const GeneratorOptions& options);
+
+/// Draws robot `robot`'s start and target anew (its footprint kept, its graph in `graphs`): a
+/// valid start clear of the starts of the robots marked in `others`, a target reachable from it
+/// clear of their targets. False, the robot unchanged, when `attempts` draws find none.
+bool placeRobot(const FleetGraphs& graphs, Instance& instance, int robot, const std::vector<bool>& others,
+                Rng& rng, int attempts);
 
 }  // namespace fleet_planner
