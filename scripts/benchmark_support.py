@@ -64,12 +64,14 @@ def random_subset_file(bench, name, k, seed, folder):
     return path
 
 
-def generated_file(cli, bench, name, k, seed, folder):
-    """Generates (once) a K-robot instance of the map with `seed` and returns its path."""
-    path = os.path.join(folder, "%s_K%d_gen%d.yaml" % (name, k, seed))
+def generated_file(cli, bench, name, k, seed, folder, feasible=False):
+    """Generates (once) a K-robot instance of the map with `seed` and returns its path; `feasible`:
+    with `generate --feasible` (robots of proven-impossible pairs drawn again)."""
+    path = os.path.join(folder, "%s_K%d_%s%d.yaml" % (name, k, "feas" if feasible else "gen", seed))
     if not os.path.exists(path):
         r = subprocess.run([cli, "generate", "--map", map_path(bench, name), "--agents", str(k), "--seed", str(seed),
-                            "--out", path], stdout=subprocess.PIPE, stderr=subprocess.PIPE, universal_newlines=True)
+                            "--out", path] + (["--feasible"] if feasible else []),
+                           stdout=subprocess.PIPE, stderr=subprocess.PIPE, universal_newlines=True)
         if r.returncode != 0:
             fail("generate %s K=%d seed %d: %s" % (name, k, seed, last_line(r.stderr)))
     return path
@@ -78,8 +80,9 @@ def generated_file(cli, bench, name, k, seed, folder):
 def problem_args(bench, name, k, subset, seed, folder, cli=None):
     """CLI arguments naming the map and the robots of one run."""
     args = ["--map", map_path(bench, name)]
-    if subset == "generated":
-        return args + ["--instance", generated_file(cli, bench, name, k, seed, folder), "--agents", "0"]
+    if subset in ("generated", "feasible"):
+        path = generated_file(cli, bench, name, k, seed, folder, feasible=subset == "feasible")
+        return args + ["--instance", path, "--agents", "0"]
     if subset == "mixed":
         return args + ["--instance", pool_path(bench, name), "--agents", str(k)]
     return args + ["--instance", random_subset_file(bench, name, k, seed, folder), "--agents", "0"]

@@ -15,7 +15,8 @@ the map's pool (the CLI's --agents K). --random-subsets N adds, for every K, N r
 subsets (ceil(K/2) circles and floor(K/2) blocks drawn with seeds 1..N, the same seed passed to
 the solver), written as pool files into a temporary folder. --generated N adds, for every K
 (even beyond the pool's size), N instances made by `fleet_planner_cli generate` (the paper's
-generator distribution) with seeds 1..N.
+generator distribution) with seeds 1..N; --generated-feasible N the same with `generate
+--feasible` (subset "feasible": robots of pairs proven unable to reach both targets drawn again).
 
 Status: the CLI's status (SUCCESS, TIMEOUT, INFEASIBLE, ...), or UNREACHABLE (the CLI rejected
 the instance because a robot cannot reach its target: exit 2), BAD_INPUT (other exit 2),
@@ -167,6 +168,7 @@ def plan_runs(args, decomposition):
                 subsets += [("mixed", s) for s in (args.seeds if not decomposition else [0])]
                 subsets += [("random", s) for s in range(1, args.random_subsets + 1)]
             subsets += [("generated", s) for s in range(1, args.generated + 1)]
+            subsets += [("feasible", s) for s in range(1, args.generated_feasible + 1)]
             for subset, seed in subsets:
                 if decomposition:
                     runs.append((name, k, subset, seed))
@@ -331,6 +333,9 @@ def parse_args(argv):
     p.add_argument("--seeds", nargs="+", type=int, default=[0], help="solver seeds of the 'K mixed' runs (default: 0)")
     p.add_argument("--random-subsets", type=int, default=0, metavar="N",
                    help="also N random K-robot subsets per K, drawn with seeds 1..N (default: 0)")
+    p.add_argument("--generated-feasible", type=int, default=0, metavar="N",
+                   help="also N instances per K from `fleet_planner_cli generate --feasible` (robots of pairs proven "
+                        "unable to reach both targets drawn again), seeds 1..N")
     p.add_argument("--generated", type=int, default=0, metavar="N",
                    help="also N instances per K from `fleet_planner_cli generate`, seeds 1..N; K may exceed the pool "
                         "(default: 0)")
@@ -377,7 +382,8 @@ def check_inputs(args):
                 known = sorted(f[:-7] for f in os.listdir(os.path.join(args.benchmark_dir, "instances"))
                                if f.endswith("_la.txt"))
                 fail("map %s: %s not found (maps with a pool: %s)" % (name, path, ", ".join(known)))
-    if args.time_limit <= 0 or args.grace < 0 or args.random_subsets < 0 or args.generated < 0 or min(args.counts) < 1:
+    if (args.time_limit <= 0 or args.grace < 0 or args.random_subsets < 0 or args.generated < 0
+            or args.generated_feasible < 0 or min(args.counts) < 1):
         fail("--time-limit must be > 0, --grace and --random-subsets >= 0, counts >= 1")
     if len(set(args.seeds)) != len(args.seeds):
         fail("--seeds must not repeat")
