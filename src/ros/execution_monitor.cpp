@@ -139,6 +139,8 @@ fleet_planner::FleetExecution ExecutionMonitor::update(const std::vector<std::op
       r.state = RobotExecutionMsg::ARRIVED;
     } else if (i >= static_cast<int>(poses.size()) || !poses[i]) {
       r.state = RobotExecutionMsg::NO_POSE;
+    } else if (matchers_[i].distanceToPath(*poses[i], r.progress, r.released) > settings_.off_path_tolerance) {
+      r.state = RobotExecutionMsg::OFF_PATH;
     } else if (r.released > r.progress) {
       r.state = RobotExecutionMsg::DRIVING;
     } else {
@@ -175,14 +177,14 @@ diagnostic_msgs::DiagnosticArray executionDiagnostics(const fleet_planner::Fleet
   fleet.values = {value("dependencies", std::to_string(execution.dependencies)),
                   value("collisions", std::to_string(execution.collisions))};
   out.status.push_back(fleet);
-  static const char* const kStates[] = {"waiting", "driving", "blocked", "arrived", "no pose"};
+  static const char* const kStates[] = {"waiting", "driving", "blocked", "arrived", "no pose", "off its path"};
   for (const auto& r : execution.robots) {
     Status s;
     s.name = "fleet_planner: execution: " + r.robot_id;
     s.hardware_id = r.robot_id;
-    s.message = r.state < 5 ? kStates[r.state] : "unknown";
+    s.message = r.state < 6 ? kStates[r.state] : "unknown";
     if (!r.blocked_by.empty()) s.message += " for " + r.blocked_by;
-    s.level = r.state == RobotExecutionMsg::NO_POSE                                        ? Status::ERROR
+    s.level = r.state == RobotExecutionMsg::NO_POSE || r.state == RobotExecutionMsg::OFF_PATH ? Status::ERROR
               : r.state == RobotExecutionMsg::BLOCKED || r.lateness > settings.late_warning ? Status::WARN
                                                                                              : Status::OK;
     s.values = {value("progress", std::to_string(r.progress)), value("released", std::to_string(r.released)),

@@ -14,6 +14,7 @@ ExecutionSettings executionSettings(const PlannerConfig& c) {
   s.heading_tolerance = c.progress_heading_tolerance;
   s.blocked_timeout = c.blocked_timeout;
   s.late_warning = c.late_warning;
+  s.off_path_tolerance = c.off_path_tolerance;
   return s;
 }
 

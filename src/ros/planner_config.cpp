@@ -118,6 +118,7 @@ std::vector<std::string> checkPlannerConfig(const PlannerConfig& c) {
   check.positive("progress_heading_tolerance", c.progress_heading_tolerance);
   check.positive("blocked_timeout", c.blocked_timeout);
   check.nonNegative("late_warning", c.late_warning);
+  check.positive("off_path_tolerance", c.off_path_tolerance);
   return check.errors;
 }
 

@@ -83,7 +83,7 @@ const std::vector<std::string>& plannerParameterNames() {
       "unknown_policy",    "position_tolerance", "heading_tolerance", "sweep_tolerance", "seconds_per_step",
       "map_frame",         "base_frame",         "tf_timeout",      "playback",          "planned_frame",
       "playback_rate",     "playback_loop",      "execute",         "execution_rate",    "progress_tolerance",
-      "progress_heading_tolerance", "blocked_timeout", "late_warning"};
+      "progress_heading_tolerance", "blocked_timeout", "late_warning", "off_path_tolerance"};
   return names;
 }
 
@@ -138,6 +138,7 @@ PlannerConfig loadPlannerConfig(const ros::NodeHandle& nh) {
   r.read("progress_heading_tolerance", c.progress_heading_tolerance);
   r.read("blocked_timeout", c.blocked_timeout);
   r.read("late_warning", c.late_warning);
+  r.read("off_path_tolerance", c.off_path_tolerance);
   return c;
 }
 

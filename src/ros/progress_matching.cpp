@@ -61,6 +61,17 @@ int ProgressMatcher::match(const geometry_msgs::Pose2D& pose, int from, int to) 
   return -1;
 }
 
+double ProgressMatcher::distanceToPath(const geometry_msgs::Pose2D& pose, int from, int to) const {
+  double best = std::hypot(pose.x - states_[from].x, pose.y - states_[from].y);
+  for (int k = from; k < to; ++k) {
+    const auto &a = states_[k], &b = states_[k + 1];
+    const double dx = b.x - a.x, dy = b.y - a.y, len2 = dx * dx + dy * dy;
+    const double f = len2 > 0 ? std::clamp(((pose.x - a.x) * dx + (pose.y - a.y) * dy) / len2, 0.0, 1.0) : 0.0;
+    best = std::min(best, std::hypot(pose.x - (a.x + f * dx), pose.y - (a.y + f * dy)));
+  }
+  return best;
+}
+
 int ProgressMatcher::releaseCap(int from, int to, int window) const {
   const int last = std::min(to, from + window);
   int cap = from;

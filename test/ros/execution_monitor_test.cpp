@@ -137,6 +137,29 @@ TEST_F(ExecutionMonitorTest, OverlapsAreCountedOncePerContact) {
   EXPECT_EQ(diagnostics.status[0].level, diagnostic_msgs::DiagnosticStatus::ERROR);
 }
 
+TEST_F(ExecutionMonitorTest, ARobotAwayFromItsPathIsOffItsPath) {
+  ExecutionMonitor monitor = started();
+  Poses poses = startPoses();
+  EXPECT_NE(monitor.update(poses, ros::Time(100)).robots[2].state, RobotMsg::OFF_PATH);
+  poses[2]->y += 0.15;  // within the tolerance (0.3 m), at no state
+  EXPECT_NE(monitor.update(poses, ros::Time(101)).robots[2].state, RobotMsg::OFF_PATH);
+  // Away from every state of its path: then no state of its release matches either.
+  const ProgressMatcher whole(call.executable->poses[2], 0.05, 0.2);
+  const int last = whole.lastState();
+  for (double dy : {0.5, -0.5, 1.0, -1.0, 1.5, -1.5}) {
+    geometry_msgs::Pose2D away = *poses[2];
+    away.y += dy - 0.15;
+    if (whole.distanceToPath(away, 0, last) > 0.4) {
+      poses[2] = away;
+      break;
+    }
+  }
+  ASSERT_GT(whole.distanceToPath(*poses[2], 0, last), 0.4);
+  const auto e = monitor.update(poses, ros::Time(102));
+  EXPECT_EQ(e.robots[2].state, RobotMsg::OFF_PATH);
+  EXPECT_EQ(executionDiagnostics(e, {}, ros::Time(102)).status[3].level, diagnostic_msgs::DiagnosticStatus::ERROR);
+}
+
 TEST_F(ExecutionMonitorTest, MissingPosesAndLongWaitsAreReported) {
   ExecutionSettings settings;
   settings.blocked_timeout = 1.0;

@@ -31,6 +31,7 @@ struct ExecutionSettings {
   double heading_tolerance = 0.2;    ///< radians
   double blocked_timeout = 10.0;     ///< seconds waiting before a robot is BLOCKED
   double late_warning = 5.0;         ///< seconds late before its diagnostics warn
+  double off_path_tolerance = 0.3;   ///< metres from its path (progress to release) before OFF_PATH
 };
 
 class ExecutionMonitor {

@@ -68,6 +68,7 @@ struct PlannerConfig {
   double progress_heading_tolerance = 0.2;  ///< radians, likewise
   double blocked_timeout = 10.0;      ///< seconds waiting for another robot before BLOCKED
   double late_warning = 5.0;          ///< seconds behind the plan before the diagnostics warn
+  double off_path_tolerance = 0.3;    ///< metres from its path before a robot is OFF_PATH
 
   OccupancyPolicy occupancyPolicy() const { return {occupied_threshold, unknown_policy == "free"}; }
   PoseTolerance poseTolerance() const { return {position_tolerance, heading_tolerance}; }

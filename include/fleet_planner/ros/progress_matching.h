@@ -32,6 +32,9 @@ class ProgressMatcher {
   /// at least from + 1 when to > from.
   int releaseCap(int from, int to, int window = 64) const;
 
+  /// Metres from `pose` to the path through states from..to (straight between states).
+  double distanceToPath(const geometry_msgs::Pose2D& pose, int from, int to) const;
+
   int lastState() const { return static_cast<int>(states_.size()) - 1; }
   const geometry_msgs::Pose2D& state(int k) const { return states_[k]; }
 
