@@ -41,6 +41,15 @@ ExecutionTracker::ExecutionTracker(const Plan& plan, StepDependencies dependenci
   finished_ = static_cast<int>(std::count(last_.begin(), last_.end(), 0));
 }
 
+ExecutionTracker::ExecutionTracker(const Plan& plan, StepDependencies dependencies, const std::vector<int>& progress)
+    : ExecutionTracker(plan, std::move(dependencies)) {
+  if (progress.size() != last_.size()) {
+    throw InvalidInput("progress for " + std::to_string(progress.size()) + " robots, plan has " +
+                       std::to_string(last_.size()));
+  }
+  for (int i = 0; i < robots(); ++i) reportProgress(i, progress[i]);
+}
+
 void ExecutionTracker::checkRobot(int robot) const {
   if (robot < 0 || robot >= robots()) throw InvalidInput("no robot " + std::to_string(robot) + " in the plan");
 }

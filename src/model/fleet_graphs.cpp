@@ -6,6 +6,8 @@
 #include <string>
 #include <unordered_map>
 
+#include "fleet_planner/runtime/errors.h"
+
 namespace fleet_planner {
 
 FleetGraphs::Groups FleetGraphs::group(const std::vector<Footprint>& footprints, int step) {
@@ -77,6 +79,14 @@ FleetGraphs::FleetGraphs(const GridMap& map, Groups groups, ActionModel model, i
     for (const auto& g : graphs_) built += g ? 1 : 0;
     throw DeadlineExpired("deadline passed while the state graphs were built (" + std::to_string(built) + " of " +
                           std::to_string(distinct.size()) + " built)");
+  }
+}
+
+FleetGraphs::FleetGraphs(const FleetGraphs& all, const std::vector<int>& robots)
+    : obstacles_(all.obstacles_), graphs_(all.graphs_) {
+  for (int r : robots) {
+    if (r < 0 || r >= all.numRobots()) throw InvalidInput("no robot " + std::to_string(r) + " among the fleet's graphs");
+    robot_graph_.push_back(all.robot_graph_[r]);
   }
 }
 

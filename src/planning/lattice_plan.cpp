@@ -8,11 +8,7 @@
 
 namespace fleet_planner {
 
-namespace {
-
-/// Robot a and robot b along their paths meet at some step u >= from (a step's sweeps overlap;
-/// after its path a robot stays at rest).
-bool meet(const RobotCells& a, const Path& pa, const RobotCells& b, const Path& pb, int from, const ActionModel& model) {
+bool pathsMeet(const RobotCells& a, const Path& pa, const RobotCells& b, const Path& pb, int from, const ActionModel& model) {
   const int end = static_cast<int>(std::max(pa.size(), pb.size()));
   for (int u = std::max(0, from); u < end; ++u) {
     const CellSet* sa = a.sweepAt(u, model);
@@ -24,8 +20,6 @@ bool meet(const RobotCells& a, const Path& pa, const RobotCells& b, const Path& 
   const GridPose &a1 = pa.back(), &b1 = pb.back();
   return CellSet::overlap(a.bodyAt(end), {a1.x, a1.y}, b.bodyAt(end), {b1.x, b1.y});
 }
-
-}  // namespace
 
 std::optional<Plan> assembleLatticePlan(const Instance& instance, const LatticeInstance& lattice,
                                         const FleetGraphs& graphs, const Plan& lattice_plan, std::string& problem) {
@@ -71,7 +65,7 @@ std::optional<Plan> assembleLatticePlan(const Instance& instance, const LatticeI
       const RobotCells mine(original[i], graphs.cells(i), candidate);
       bool clash = false;
       for (int j = 0; j < n && !clash; ++j) {
-        if (j != i) clash = meet(mine, candidate, *cells[j], paths[j], t, model);
+        if (j != i) clash = pathsMeet(mine, candidate, *cells[j], paths[j], t, model);
       }
       if (clash) continue;
       paths[i] = std::move(candidate);

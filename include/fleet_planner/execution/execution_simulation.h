@@ -10,8 +10,13 @@
 /// checked against every other robot, cell by cell.
 #include <cstddef>
 #include <cstdint>
+#include <functional>
+#include <memory>
+#include <optional>
 #include <string>
+#include <vector>
 
+#include "fleet_planner/execution/execution_tracker.h"
 #include "fleet_planner/execution/plan_cells.h"
 #include "fleet_planner/execution/step_dependencies.h"
 
@@ -30,15 +35,44 @@ struct SimulationResult {
   int other = -1;          ///< Collision: the robot it ran into
   double time = 0.0;       ///< when it happened; Completed: when the last robot arrived
   std::size_t events = 0;  ///< steps finished
+  std::vector<double> arrivals;  ///< per robot: when it reached its last state (-1: never)
   std::string message;     ///< what happened, for test messages
 };
+
+/// A fault: `robot` starts no step from `from` until `until` (a person in the way).
+struct Hold {
+  int robot = -1;
+  double from = 0.0;
+  double until = 0.0;
+};
+
+/// A new plan handed over during the execution (replanning.h): the robots keep their progress
+/// and the steps they are doing, which the new plan must keep.
+struct SimulatedReplan {
+  std::shared_ptr<const Plan> plan;
+  std::shared_ptr<const PlanCells> cells;  ///< of *plan
+  StepDependencies dependencies;
+};
+
+/// The execution as a re-plan sees it, after each event.
+struct ExecutionSnapshot {
+  double time = 0.0;
+  const PlanCells* cells = nullptr;
+  const ExecutionTracker* tracker = nullptr;
+  std::vector<bool> moving;  ///< per robot: doing its step from its progress
+  std::vector<bool> held;    ///< per robot: held by a Hold now
+};
+using ReplanHook = std::function<std::optional<SimulatedReplan>(const ExecutionSnapshot&)>;
 
 /// Executes the plan of `cells` with random delays drawn from `seed`. With `dependencies`, a
 /// robot starts a step only when an ExecutionTracker releases it, and passes its waits without
 /// stopping. Without (null), each robot runs its steps back to back, waits included: the plan's
-/// own timing, stretched at random, as a robot with no coordination would drive it.
+/// own timing, stretched at random, as a robot with no coordination would drive it. `holds`
+/// stop robots on purpose. With dependencies, `replan` is asked after every event whether to
+/// switch to a new plan (collisions are then checked on the new plan's cells).
 SimulationResult simulateExecution(const PlanCells& cells, const StepDependencies* dependencies,
-                                   const DelayModel& delays, std::uint64_t seed);
+                                   const DelayModel& delays, std::uint64_t seed,
+                                   const std::vector<Hold>& holds = {}, const ReplanHook& replan = {});
 
 /// "completed", "collision", "deadlock".
 const char* outcomeName(SimulationResult::Outcome outcome);

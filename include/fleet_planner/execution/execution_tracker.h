@@ -25,6 +25,10 @@ class ExecutionTracker {
   /// Every robot at state 0. Throws InvalidInput when `dependencies` do not have one list per
   /// step of every path of `plan`, or name a robot or state that does not exist.
   ExecutionTracker(const Plan& plan, StepDependencies dependencies);
+  /// Resumes an execution: each robot at `progress` (one state per robot, on its path), as after
+  /// a re-plan (replanning.h) that kept the states robots have reached. Throws InvalidInput as
+  /// above, and for a progress that is not a state of its robot's path.
+  ExecutionTracker(const Plan& plan, StepDependencies dependencies, const std::vector<int>& progress);
 
   int robots() const { return static_cast<int>(last_.size()); }
   /// The robot's last state: path size - 1.

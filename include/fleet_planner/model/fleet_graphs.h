@@ -26,6 +26,10 @@ class FleetGraphs {
   FleetGraphs(const GridMap& map, const std::vector<Footprint>& footprints, ActionModel model = {},
               int threads = 1, const ResourceLimits& limits = {}, const Deadline& deadline = {});
 
+  /// Some robots of `all` (their indices, in this order), sharing its graphs: robot i here is
+  /// robot robots[i] there. Throws InvalidInput for an index out of range.
+  FleetGraphs(const FleetGraphs& all, const std::vector<int>& robots);
+
   int numRobots() const { return static_cast<int>(robot_graph_.size()); }
   int numGraphs() const { return static_cast<int>(graphs_.size()); }
   const StateGraph& graph(int robot) const { return *graphs_[robot_graph_[robot]]; }

@@ -20,6 +20,7 @@
 #include "fleet_planner/model/instance.h"
 #include "fleet_planner/model/instance_check.h"
 #include "fleet_planner/model/plan.h"
+#include "fleet_planner/model/robot_cells.h"
 
 namespace fleet_planner {
 
@@ -47,6 +48,11 @@ struct LatticeInstance {
 /// fewest connecting steps whose motions are free on the map, and whose starts' connections,
 /// run together, meet no other robot's.
 LatticeInstance connectToLattice(const GridMap& map, const Instance& instance, const FleetGraphs& graphs, int step);
+
+/// Robot a and robot b along their paths meet at some step u >= from: the cells they cover during
+/// step u share one (after its path a robot stays at rest).
+bool pathsMeet(const RobotCells& a, const Path& pa, const RobotCells& b, const Path& pb, int from,
+               const ActionModel& model);
 
 /// The full plan of `instance` (the robots as given, yaws included): the starts' connections (all together, padded with waits), the
 /// lattice plan, and each target's connection at its earliest safe step. Nothing if some target's

@@ -5,6 +5,7 @@
 /// obstacles.
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -28,6 +29,16 @@ struct StaticFootprint {
 struct MovingObstacle {
   int robot = -1;  ///< instance index (its footprint is used)
   Path path;
+  /// Steps 0..held_through of the path are taken from step 0 on, not only when the path does
+  /// them: a robot already allowed to drive them may be anywhere on them until then (an
+  /// executing robot's released steps, execution/replanning.h). -1: none.
+  int held_through = -1;
+  /// The held steps are taken for good, not only until the path does them (a robot that may
+  /// stand still on them for long: a fault, a person in the way).
+  bool held_for_good = false;
+  /// The path's first step turns in place from this yaw, its last step to this one (as a
+  /// Robot's, robot_cells.h): an executing robot's path cut from a full plan.
+  std::optional<double> start_yaw = std::nullopt, target_yaw = std::nullopt;
 };
 
 struct Subproblem {

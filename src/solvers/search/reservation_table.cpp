@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "fleet_planner/model/action.h"
+#include "fleet_planner/model/robot_cells.h"
 #include "fleet_planner/runtime/errors.h"
 
 namespace fleet_planner {
@@ -25,7 +26,23 @@ ReservationTable::ReservationTable(int width, int height, const std::vector<Movi
   for (const MovingObstacle& m : moving) {
     if (m.path.empty()) throw InvalidInput("moving obstacle of robot index " + std::to_string(m.robot) + " has an empty path");
     const FootprintCells& cells = graphs.cells(m.robot);
-    for (std::size_t t = 0; t + 1 < m.path.size(); ++t) {
+    Robot shape;  // only its yaws: turns onto the path and off it (robot_cells.h)
+    shape.start_yaw = m.start_yaw;
+    shape.target_yaw = m.target_yaw;
+    const RobotCells robot_cells(shape, cells, m.path);
+    if (!robot_cells.shapeProblem().empty()) {
+      throw InvalidInput("moving obstacle of robot index " + std::to_string(m.robot) + ": " + robot_cells.shapeProblem());
+    }
+    const int end = static_cast<int>(m.path.size()) - 1;
+    for (int t = 0; t < end; ++t) {
+      const bool held = t <= m.held_through;
+      auto take = [&](const CellSet& set, int last) {
+        reserve(set, m.path[t], held ? 0 : t, held && m.held_for_good ? kForever : last);
+      };
+      if ((t == 0 && m.start_yaw) || (t == end - 1 && m.target_yaw)) {
+        take(*robot_cells.sweepAt(t, model), t);  // a turn from or to a yaw
+        continue;
+      }
       const auto action = actionBetween(m.path[t], m.path[t + 1], model);
       if (!action) {
         throw InvalidInput("moving obstacle of robot index " + std::to_string(m.robot) + " makes an illegal step at t=" +
@@ -33,15 +50,15 @@ ReservationTable::ReservationTable(int width, int height, const std::vector<Movi
       }
       // A run of waits is one reservation: merged plans wait for thousands of steps, and one
       // entry per cell and step made building the table most of the refinement's time.
-      std::size_t last = t;
+      int last = t;
       if (*action == Action::Wait) {
-        while (last + 2 < m.path.size() && m.path[last + 2] == m.path[t]) ++last;
+        const int last_wait = m.target_yaw ? end - 2 : end - 1;  // the turn to the target yaw is no wait
+        while (last + 1 <= last_wait && m.path[last + 2] == m.path[t]) ++last;
       }
-      reserve(cells.swept(m.path[t].heading, *action), m.path[t], static_cast<int>(t), static_cast<int>(last));
+      take(cells.swept(m.path[t].heading, *action), last);
       t = last;
     }
-    const int end = static_cast<int>(m.path.size()) - 1;
-    reserve(cells.body(m.path.back().heading), m.path.back(), end, kForever);
+    reserve(robot_cells.bodyAt(end), m.path.back(), end <= m.held_through ? 0 : end, kForever);
     last_change_ = std::max(last_change_, end);
   }
   std::vector<Entry> block_entries;
