@@ -39,6 +39,12 @@ class SimulatedRobot:
         if self.states:
             self.pose = self.states[0]
 
+    def revise(self, states):
+        """The same plan, re-planned from the state the robot was released to: the states up to
+        there are unchanged, so the robot keeps where it is on them and what it was released."""
+        self.states = [tuple(s) for s in states]
+        self.released = min(self.released, len(self.states) - 1)
+
     def arrived(self):
         return not self.states or self.index >= len(self.states) - 1
 
@@ -74,6 +80,14 @@ class FleetSimulation:
             self.robots[robot_id].follow(states)
             if self.uncoordinated:
                 self.robots[robot_id].released = len(states) - 1
+
+    def revise(self, timelines):
+        """A re-plan merged into the running plan: robot id -> states; robots whose states
+        changed follow their new ones from where they are."""
+        for robot_id, states in sorted(timelines.items()):
+            robot = self.robots.get(robot_id)
+            if robot is not None and robot.states != [tuple(s) for s in states]:
+                robot.revise(states)
 
     def release(self, robot_id, released):
         robot = self.robots.get(robot_id)

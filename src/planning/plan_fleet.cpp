@@ -56,6 +56,7 @@ class LatticeAttempt {
     model.step = step;
     const auto graphs = buildGraphs(model);
     if (!graphs) return true;  // TIMEOUT or RESOURCE_LIMIT while building them
+    graphs_ = graphs;
     // Step 1 with every start and target on a grid heading is the paper's model: no connections.
     bool yaws = false;
     for (const Robot& r : instance_.robots) yaws = yaws || r.start_yaw || r.target_yaw;
@@ -68,6 +69,9 @@ class LatticeAttempt {
     if (!lattice.problem.empty()) return step > 1 ? giveUp(step, lattice.problem) : finalFailure(SolveStatus::Infeasible, lattice.problem);
     return planOn(lattice.instance, *graphs, &lattice, step);
   }
+
+  /// The graphs of the last lattice tried.
+  const std::shared_ptr<const FleetGraphs>& graphs() const { return graphs_; }
 
  private:
   std::shared_ptr<const FleetGraphs> buildGraphs(const ActionModel& model) {
@@ -155,6 +159,7 @@ class LatticeAttempt {
   const Deadline& deadline_;
   const MemoryGuard& memory_;
   PlanningResult& result_;
+  std::shared_ptr<const FleetGraphs> graphs_;
 };
 
 }  // namespace
@@ -179,6 +184,7 @@ PlanningResult planFleet(const GridMap& map, const Instance& instance, const Pla
   for (int step = initialLatticeStep(options, instance);; step = std::max(1, step / 2)) {
     if (attempt.run(step) || step == 1) break;
   }
+  if (result.success()) result.graphs = attempt.graphs();
   result.time_s = since(call.started);
   return result;
 }

@@ -10,6 +10,7 @@
 #include "fleet_planner/execution/step_dependencies.h"
 #include "fleet_planner/model/footprint_cells.h"
 #include "fleet_planner/ros/conversions.h"
+#include "fleet_planner/ros/path_messages.h"
 
 namespace fleet_planner {
 
@@ -58,6 +59,84 @@ void ExecutionMonitor::start(ExecutablePlan plan, double seconds_per_step, const
   }
   waiting_since_.assign(ids_.size(), ros::Time());
   touching_.clear();
+  seconds_per_step_ = seconds_per_step;
+}
+
+std::vector<int> ExecutionMonitor::blockedRobots() const {
+  std::vector<int> out;
+  for (std::size_t i = 0; i < message_.robots.size(); ++i) {
+    if (message_.robots[i].state == RobotExecutionMsg::BLOCKED) out.push_back(static_cast<int>(i));
+  }
+  return out;
+}
+
+ReplanReport ExecutionMonitor::replan(const std::vector<int>& robots, double time_limit) {
+  ReplanReport report;
+  const int n = static_cast<int>(ids_.size());
+  ReplanRequest rq;
+  rq.map = plan_.map.get();
+  rq.instance = &plan_.instance;
+  rq.graphs = plan_.graphs.get();
+  rq.plan = &plan_.plan;
+  for (int i = 0; i < n; ++i) {
+    rq.progress.push_back(tracker_->progress(i));
+    rq.released.push_back(std::max<int>(rq.progress.back(), message_.robots[i].released));
+  }
+  std::string names;
+  for (int a : robots) {
+    if (tracker_->done(a)) continue;
+    rq.robots.push_back(a);
+    names += (names.empty() ? "'" : ", '") + ids_[a] + "'";
+    // Around the robot it waits for: that robot's steps up to the state it waits for.
+    if (const auto holder = tracker_->blockedBy(a); holder && tracker_->releasedUpTo(a) == tracker_->progress(a)) {
+      rq.avoid.push_back({holder->robot, holder->state});
+    }
+  }
+  if (rq.robots.empty()) {
+    report.nothing_to_do = true;
+    report.message = "every robot asked for has arrived";
+    return report;
+  }
+  if (!rq.graphs) {
+    report.message = "the running plan has no state graphs to re-plan on";
+    return report;
+  }
+  rq.deadline = Deadline::in(time_limit);
+  rq.seed = (static_cast<std::uint64_t>(plans_) << 20) + message_.revision;
+  const ReplanResult result = replanRobots(rq);
+  report.time_s = result.time_s;
+  message_.last_replan_time = result.time_s;
+  if (!result.success()) {
+    report.message = "re-planning " + names + ": " + statusName(result.status) + ": " + result.reason;
+    ++message_.replans_refused;
+    message_.last_replan = report.message;
+    return report;
+  }
+  plan_.plan = result.plan;
+  for (int a : rq.robots) {
+    const auto timeline =
+        robotTimeline(plan_.instance.robots[a], plan_.plan.paths[a], *plan_.map, seconds_per_step_);
+    auto& poses = plan_.poses[a];
+    poses.clear();
+    for (const auto& s : timeline.states) {
+      geometry_msgs::Pose2D p;
+      p.x = s.x, p.y = s.y, p.theta = s.yaw;
+      poses.push_back(p);
+    }
+    matchers_[a] = ProgressMatcher(poses, settings_.position_tolerance, settings_.heading_tolerance);
+    message_.robots[a].last_state = static_cast<std::uint32_t>(poses.size() - 1);
+    waiting_since_[a] = ros::Time();
+  }
+  tracker_ = std::make_unique<ExecutionTracker>(plan_.plan, result.dependencies, rq.progress);
+  message_.dependencies = static_cast<std::uint32_t>(result.dependencies.count());
+  ++message_.revision;
+  ++message_.replans;
+  report.merged = true;
+  report.robots = rq.robots;
+  report.message = "re-planned " + names + " in " + std::to_string(result.time_s) + " s (revision " +
+                   std::to_string(message_.revision) + ")";
+  message_.last_replan = report.message;
+  return report;
 }
 
 int ExecutionMonitor::released(int robot) const {

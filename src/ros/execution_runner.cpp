@@ -1,5 +1,7 @@
 #include "fleet_planner/ros/execution_runner.h"
 
+#include <algorithm>
+
 #include <tf2/utils.h>
 
 #include "fleet_planner/ros/path_messages.h"
@@ -36,6 +38,7 @@ void ExecutionRunner::start(const ExecutablePlan& plan, const ros::Time& plan_st
   std::lock_guard<std::mutex> lock(mutex_);
   monitor_.start(plan, config_.seconds_per_step, config_.map_frame, plan_start);
   last_sent_.clear();
+  last_attempt_.clear();
   for (const std::string& id : monitor_.robotIds()) {
     if (!robot_pubs_.count(id)) {
       robot_pubs_.emplace(id, private_nh_.advertise<fleet_planner::RobotExecution>(robotTopicName("execution", id), 1,
@@ -44,6 +47,68 @@ void ExecutionRunner::start(const ExecutablePlan& plan, const ros::Time& plan_st
   }
   ROS_INFO("fleet_planner: executing the plan of %zu robots (%u dependencies between their steps)",
            monitor_.robotIds().size(), monitor_.dependencies());
+}
+
+void ExecutionRunner::onRevised(RevisionCallback callback) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  on_revised_ = std::move(callback);
+}
+
+ReplanReport ExecutionRunner::replanLocked(const std::vector<int>& robots, double time_limit) {
+  ReplanReport report = monitor_.replan(robots, time_limit);
+  if (report.merged) {
+    ROS_INFO("fleet_planner: execution: %s", report.message.c_str());
+    if (on_revised_) on_revised_(monitor_.plan(), monitor_.revision(), monitor_.stamp());
+  } else if (!report.nothing_to_do) {
+    ROS_WARN("fleet_planner: execution: %s", report.message.c_str());
+  }
+  return report;
+}
+
+fleet_planner::ReplanRobots::Response ExecutionRunner::replan(const fleet_planner::ReplanRobots::Request& request) {
+  using Response = fleet_planner::ReplanRobots::Response;
+  Response response;
+  try {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (!monitor_.running()) {
+      response.status = Response::NOT_EXECUTING;
+      response.message = "no plan is being executed";
+      return response;
+    }
+    if (!(request.time_limit >= 0.0) || request.time_limit > 3600.0) {
+      response.status = Response::INVALID_REQUEST;
+      response.message = "time_limit must be in [0, 3600] s (0: the replan_time_limit parameter)";
+      return response;
+    }
+    std::vector<int> robots;
+    const auto& ids = monitor_.robotIds();
+    for (const std::string& id : request.robot_ids) {
+      const auto it = std::find(ids.begin(), ids.end(), id);
+      if (it == ids.end()) {
+        response.status = Response::INVALID_REQUEST;
+        response.message = "robot '" + id + "' is not in the running plan";
+        return response;
+      }
+      robots.push_back(static_cast<int>(it - ids.begin()));
+    }
+    if (request.robot_ids.empty()) robots = monitor_.blockedRobots();
+    if (robots.empty()) {
+      response.status = Response::NOTHING_TO_DO;
+      response.message = "no robot is BLOCKED";
+      return response;
+    }
+    const ReplanReport report =
+        replanLocked(robots, request.time_limit > 0.0 ? request.time_limit : config_.replan_time_limit);
+    response.status = report.merged ? Response::SUCCESS : report.nothing_to_do ? Response::NOTHING_TO_DO : Response::NO_PLAN;
+    response.message = report.message;
+    response.time = report.time_s;
+    for (int a : report.robots) response.replanned.push_back(ids[a]);
+  } catch (const std::exception& e) {
+    response.status = Response::NO_PLAN;
+    response.message = std::string("internal error: ") + e.what();
+    ROS_ERROR("fleet_planner: replan: %s", response.message.c_str());
+  }
+  return response;
 }
 
 std::optional<geometry_msgs::Pose2D> ExecutionRunner::poseOf(const std::string& robot_id) const {
@@ -66,8 +131,17 @@ void ExecutionRunner::onTimer(const ros::TimerEvent&) {
     std::vector<std::optional<geometry_msgs::Pose2D>> poses;
     for (const std::string& id : monitor_.robotIds()) poses.push_back(poseOf(id));
     const ros::Time now = ros::Time::now();
-    const fleet_planner::FleetExecution execution = monitor_.update(poses, now);
+    fleet_planner::FleetExecution execution = monitor_.update(poses, now);
     for (const std::string& contact : monitor_.newContacts()) ROS_WARN("fleet_planner: execution: contact: %s", contact.c_str());
+    if (config_.replan_blocked) {
+      // Each robot BLOCKED for longer than blocked_timeout, at most once per blocked_timeout.
+      for (int a : monitor_.blockedRobots()) {
+        ros::Time& last = last_attempt_[monitor_.robotIds()[a]];
+        if (!last.isZero() && (now - last).toSec() < config_.blocked_timeout) continue;
+        last = now;
+        if (replanLocked({a}, config_.replan_time_limit).merged) execution = monitor_.update(poses, ros::Time::now());
+      }
+    }
     execution_pub_.publish(execution);
     for (const auto& robot : execution.robots) {
       auto sent = last_sent_.find(robot.robot_id);

@@ -249,6 +249,7 @@ void FleetPlanningService::planChecked(const Request& request, const StartLookup
     executable->instance = instance;
     executable->plan = result.plan;
     executable->lattice_step = result.lattice_step;
+    executable->graphs = result.graphs;
     for (const auto& timeline : res.timelines) {
       auto& poses = executable->poses.emplace_back();
       for (const auto& s : timeline.states) {

@@ -1,10 +1,37 @@
 // Timelines as nav_msgs/Path; see path_messages.h.
 #include "fleet_planner/ros/path_messages.h"
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 
+#include "fleet_planner/model/robot_cells.h"
+#include "fleet_planner/ros/conversions.h"
+
 namespace fleet_planner {
+
+fleet_planner::RobotTimeline robotTimeline(const Robot& robot, const Path& path, const GridMap& grid,
+                                           double seconds_per_step) {
+  fleet_planner::RobotTimeline timeline;
+  timeline.robot_id = robot.id;
+  timeline.subproblem = -1;
+  timeline.cost = std::max(0, pathCost(path, planTarget(robot, path)));
+  for (int t = 0; t < static_cast<int>(path.size()); ++t) {
+    fleet_planner::TimedState state;
+    state.step = t;
+    state.time = t * seconds_per_step;
+    const auto pose = toPose2D(grid, path[t]);
+    state.x = pose.x, state.y = pose.y, state.yaw = pose.theta;
+    // A start or goal off the grid headings: the timeline begins and ends at its true yaw.
+    if (t == 0 && robot.start_yaw) state.yaw = wrapAngle(*robot.start_yaw + grid.origin().yaw);
+    if (t + 1 == static_cast<int>(path.size()) && robot.target_yaw) {
+      state.yaw = wrapAngle(*robot.target_yaw + grid.origin().yaw);
+    }
+    state.cell_x = path[t].x, state.cell_y = path[t].y, state.heading = path[t].heading;
+    timeline.states.push_back(state);
+  }
+  return timeline;
+}
 
 nav_msgs::Path toPathMessage(const fleet_planner::RobotTimeline& timeline, const std::string& frame,
                              const ros::Time& start, double seconds_per_step) {

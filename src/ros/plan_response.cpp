@@ -5,6 +5,7 @@
 
 #include "fleet_planner/model/robot_cells.h"
 #include "fleet_planner/ros/conversions.h"
+#include "fleet_planner/ros/path_messages.h"
 
 namespace fleet_planner {
 
@@ -126,23 +127,7 @@ void fillResponse(const Instance& instance, const GridMap& grid, const PlanningR
 
   const double dt = seconds_per_step;
   for (int i = 0; i < n; ++i) {
-    fleet_planner::RobotTimeline timeline;
-    timeline.robot_id = instance.robots[i].id;
-    const Path& path = result.plan.paths[i];
-    const Robot& robot = instance.robots[i];
-    timeline.cost = std::max(0, pathCost(path, planTarget(robot, path)));
-    for (int t = 0; t < static_cast<int>(path.size()); ++t) {
-      fleet_planner::TimedState state;
-      state.step = t;
-      state.time = t * dt;
-      const auto pose = toPose2D(grid, path[t]);
-      state.x = pose.x, state.y = pose.y, state.yaw = pose.theta;
-      // A start or goal off the grid headings: the timeline begins and ends at its true yaw.
-      if (t == 0 && robot.start_yaw) state.yaw = wrapAngle(*robot.start_yaw + grid.origin().yaw);
-      if (t + 1 == static_cast<int>(path.size()) && robot.target_yaw) state.yaw = wrapAngle(*robot.target_yaw + grid.origin().yaw);
-      state.cell_x = path[t].x, state.cell_y = path[t].y, state.heading = path[t].heading;
-      timeline.states.push_back(state);
-    }
+    fleet_planner::RobotTimeline timeline = robotTimeline(instance.robots[i], result.plan.paths[i], grid, dt);
     for (const auto& placement : call.placements) {
       if (placement.robot_id == timeline.robot_id) timeline.subproblem = placement.subproblem;
     }

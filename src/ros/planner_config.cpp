@@ -119,6 +119,7 @@ std::vector<std::string> checkPlannerConfig(const PlannerConfig& c) {
   check.positive("blocked_timeout", c.blocked_timeout);
   check.nonNegative("late_warning", c.late_warning);
   check.positive("off_path_tolerance", c.off_path_tolerance);
+  check.positive("replan_time_limit", c.replan_time_limit);
   return check.errors;
 }
 

@@ -83,7 +83,8 @@ const std::vector<std::string>& plannerParameterNames() {
       "unknown_policy",    "position_tolerance", "heading_tolerance", "sweep_tolerance", "seconds_per_step",
       "map_frame",         "base_frame",         "tf_timeout",      "playback",          "planned_frame",
       "playback_rate",     "playback_loop",      "execute",         "execution_rate",    "progress_tolerance",
-      "progress_heading_tolerance", "blocked_timeout", "late_warning", "off_path_tolerance"};
+      "progress_heading_tolerance", "blocked_timeout", "late_warning", "off_path_tolerance",
+      "replan_blocked", "replan_time_limit"};
   return names;
 }
 
@@ -139,6 +140,8 @@ PlannerConfig loadPlannerConfig(const ros::NodeHandle& nh) {
   r.read("blocked_timeout", c.blocked_timeout);
   r.read("late_warning", c.late_warning);
   r.read("off_path_tolerance", c.off_path_tolerance);
+  r.read("replan_blocked", c.replan_blocked);
+  r.read("replan_time_limit", c.replan_time_limit);
   return c;
 }
 

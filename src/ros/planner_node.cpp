@@ -39,6 +39,17 @@ PlannerNode::PlannerNode(ros::NodeHandle nh, ros::NodeHandle private_nh, Planner
   service_spinner_.start();
   if (service_.config().execute) {
     execution_ = std::make_unique<ExecutionRunner>(nh_, private_nh_, service_.config(), tf_buffer_);
+    execution_->onRevised([this](const ExecutablePlan& plan, std::uint32_t revision, const ros::Time& plan_start) {
+      publishRevision(plan, revision, plan_start);
+    });
+    auto replan = ros::AdvertiseServiceOptions::create<fleet_planner::ReplanRobots>(
+        "replan",
+        [this](fleet_planner::ReplanRobots::Request& request, fleet_planner::ReplanRobots::Response& response) {
+          response = execution_->replan(request);
+          return true;
+        },
+        ros::VoidConstPtr(), &service_queue_);
+    replan_server_ = private_nh_.advertiseService(replan);
   }
   if (service_.config().playback) {
     playback_timer_ = nh_.createTimer(ros::Duration(1.0 / kPlaybackHz), &PlannerNode::onPlaybackTimer, this);
@@ -166,20 +177,51 @@ void PlannerNode::publish(const PlanCall& call) {
   timelines.header.stamp = now;
   timelines.seconds_per_step = c.seconds_per_step;
   timelines.timelines = r.timelines;
-  timelines_pub_.publish(timelines);
-  // Each robot's plan as a nav_msgs/Path, stamped with its planned times (latched, one topic each).
-  for (const auto& timeline : r.timelines) {
-    auto pub = path_pubs_.find(timeline.robot_id);
-    if (pub == path_pubs_.end()) {
-      pub = path_pubs_.emplace(timeline.robot_id,
-                               private_nh_.advertise<nav_msgs::Path>(planTopicName(timeline.robot_id), 1, true)).first;
+  {
+    std::lock_guard<std::mutex> lock(timelines_mutex_);
+    timelines_pub_.publish(timelines);
+    timelines_ = timelines;
+    // Each robot's plan as a nav_msgs/Path, stamped with its planned times (latched, one topic each).
+    for (const auto& timeline : r.timelines) {
+      auto pub = path_pubs_.find(timeline.robot_id);
+      if (pub == path_pubs_.end()) {
+        pub = path_pubs_.emplace(timeline.robot_id,
+                                 private_nh_.advertise<nav_msgs::Path>(planTopicName(timeline.robot_id), 1, true)).first;
+      }
+      pub->second.publish(toPathMessage(timeline, c.map_frame, now, c.seconds_per_step));
     }
-    pub->second.publish(toPathMessage(timeline, c.map_frame, now, c.seconds_per_step));
   }
   if (execution_ && call.executable) execution_->start(*call.executable, now);
   std::lock_guard<std::mutex> lock(playback_mutex_);
   playing_ = r.timelines;
   playback_start_ = now;
+}
+
+void PlannerNode::publishRevision(const ExecutablePlan& plan, std::uint32_t revision, const ros::Time& plan_start) {
+  const auto& c = service_.config();
+  std::lock_guard<std::mutex> lock(timelines_mutex_);
+  if (timelines_.header.stamp != plan_start || timelines_.timelines.size() != plan.plan.paths.size()) {
+    return;  // not the plan published last
+  }
+  timelines_.revision = revision;
+  for (std::size_t i = 0; i < plan.plan.paths.size(); ++i) {
+    auto& timeline = timelines_.timelines[i];
+    const Path& path = plan.plan.paths[i];
+    bool same = timeline.states.size() == path.size();
+    for (std::size_t t = 0; same && t < path.size(); ++t) {
+      const auto& s = timeline.states[t];
+      same = s.cell_x == path[t].x && s.cell_y == path[t].y && s.heading == path[t].heading;
+    }
+    if (same) continue;
+    const int subproblem = timeline.subproblem;
+    timeline = robotTimeline(plan.instance.robots[i], path, *plan.map, c.seconds_per_step);
+    timeline.subproblem = subproblem;
+    auto pub = path_pubs_.find(timeline.robot_id);
+    if (pub != path_pubs_.end()) {
+      pub->second.publish(toPathMessage(timeline, c.map_frame, timelines_.header.stamp, c.seconds_per_step));
+    }
+  }
+  timelines_pub_.publish(timelines_);
 }
 
 void PlannerNode::onPlaybackTimer(const ros::TimerEvent&) {

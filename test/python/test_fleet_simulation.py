@@ -15,6 +15,24 @@ def run(sim, seconds, dt=0.05):
         sim.advance(dt)
 
 
+class FollowsRevisions(unittest.TestCase):
+    def test_a_revised_robot_keeps_its_place_and_drives_its_new_states(self):
+        sim = FleetSimulation(1.0)
+        sim.follow({"a": LINE, "b": [(5.0, 5.0, 0.0), (6.0, 5.0, 0.0)]})
+        sim.release("a", 1)
+        run(sim, 2.0)
+        self.assertEqual(sim.robots["a"].index, 1)
+        revised = LINE[:2] + [(1.0, 1.0, 0.0)]
+        sim.revise({"a": revised, "b": [(5.0, 5.0, 0.0), (6.0, 5.0, 0.0)]})
+        self.assertEqual(sim.robots["a"].index, 1)
+        self.assertEqual(sim.robots["a"].pose, LINE[1])
+        self.assertEqual(sim.robots["b"].index, 0)
+        sim.release("a", 2)
+        run(sim, 2.0)
+        self.assertTrue(sim.robots["a"].arrived())
+        self.assertEqual(sim.robots["a"].pose, (1.0, 1.0, 0.0))
+
+
 class DrivesReleasedSteps(unittest.TestCase):
     def test_stands_still_until_released(self):
         sim = FleetSimulation(1.0)

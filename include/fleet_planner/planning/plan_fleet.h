@@ -10,6 +10,7 @@
 #include <atomic>
 #include <chrono>
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -42,6 +43,9 @@ struct PlanningResult : LayeredResult {
   SolvabilityReport precheck;
   double precompute_s = 0.0;   ///< building the state graphs (0 when cached)
   bool graphs_cached = false;
+  /// On success: the state graphs the plan was made on (its lattice), for re-planning during its
+  /// execution (execution/replanning.h).
+  std::shared_ptr<const FleetGraphs> graphs;
   double time_s = 0.0;         ///< the whole call, from PlanningCall::started
 };
 

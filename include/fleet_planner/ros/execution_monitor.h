@@ -21,6 +21,7 @@
 #include <ros/time.h>
 
 #include "fleet_planner/execution/execution_tracker.h"
+#include "fleet_planner/execution/replanning.h"
 #include "fleet_planner/ros/fleet_planning_service.h"
 #include "fleet_planner/ros/progress_matching.h"
 
@@ -32,6 +33,15 @@ struct ExecutionSettings {
   double blocked_timeout = 10.0;     ///< seconds waiting before a robot is BLOCKED
   double late_warning = 5.0;         ///< seconds late before its diagnostics warn
   double off_path_tolerance = 0.3;   ///< metres from its path (progress to release) before OFF_PATH
+};
+
+/// What a re-plan did (ExecutionMonitor::replan).
+struct ReplanReport {
+  bool merged = false;      ///< the new paths are being executed
+  bool nothing_to_do = false;  ///< every robot asked for has arrived
+  std::string message;      ///< what was re-planned, or why not (names the robots)
+  std::vector<int> robots;  ///< re-planned (plan order)
+  double time_s = 0.0;
 };
 
 class ExecutionMonitor {
@@ -48,6 +58,19 @@ class ExecutionMonitor {
   const std::vector<std::string>& newContacts() const { return new_contacts_; }
   /// Requirements between the running plan's steps (FleetExecution::dependencies).
   std::uint32_t dependencies() const { return message_.dependencies; }
+  /// The running plan, with the re-plans merged into it.
+  const ExecutablePlan& plan() const { return plan_; }
+  /// Re-plans merged into the running plan.
+  std::uint32_t revision() const { return message_.revision; }
+  /// When the running plan started (its timelines' stamp).
+  const ros::Time& stamp() const { return message_.header.stamp; }
+  /// Robots BLOCKED at the last update (plan order).
+  std::vector<int> blockedRobots() const;
+
+  /// Plans `robots` again from the states they have reached (execution/replanning.h), each around
+  /// the next steps of the robot it waits for, within `time_limit` seconds; merges the new paths
+  /// when they keep every other robot released as far as it is. Requires running().
+  ReplanReport replan(const std::vector<int>& robots, double time_limit);
 
   /// One update from the robots' current poses (plan order; nullopt: no pose known).
   /// Returns the execution's state. Requires running().
@@ -72,6 +95,7 @@ class ExecutionMonitor {
   std::set<std::pair<int, int>> touching_;  ///< overlapping pairs at the last update
   std::vector<std::string> new_contacts_;
   std::uint32_t plans_ = 0;
+  double seconds_per_step_ = 1.0;
 };
 
 /// One status per robot (OK, WARN when late or blocked, ERROR without a pose) and one for the

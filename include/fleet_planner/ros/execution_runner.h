@@ -5,12 +5,18 @@
 ///   ~execution              fleet_planner/FleetExecution, latched, every update;
 ///   ~execution/<robot_id>   fleet_planner/RobotExecution, latched, when it changes;
 ///   /diagnostics            diagnostic_msgs/DiagnosticArray, once a second.
-/// A new plan replaces the running one. No exception leaves the timer.
+/// A new plan replaces the running one. With `replan_blocked`, a robot BLOCKED for longer than
+/// blocked_timeout is planned again around the robot it waits for (ExecutionMonitor::replan; at
+/// most once per blocked_timeout); a merged re-plan is handed to `on_revised` (the node
+/// publishes the revised timelines). No exception leaves the timer.
+#include <cstdint>
+#include <functional>
 #include <map>
 #include <mutex>
 #include <optional>
 #include <string>
 
+#include <fleet_planner/ReplanRobots.h>
 #include <fleet_planner/RobotExecution.h>
 #include <ros/ros.h>
 #include <tf2_ros/buffer.h>
@@ -28,8 +34,19 @@ class ExecutionRunner {
   /// Executes `plan` from `plan_start` (the stamp of the timelines it was published with).
   void start(const ExecutablePlan& plan, const ros::Time& plan_start);
 
+  /// Called with the running plan and its revision after each merged re-plan (under the
+  /// runner's lock: do not call back into the runner).
+  using RevisionCallback =
+      std::function<void(const ExecutablePlan& plan, std::uint32_t revision, const ros::Time& plan_start)>;
+  void onRevised(RevisionCallback callback);
+
+  /// The ~replan service: re-plans the robots named (empty: every BLOCKED one). Never throws.
+  fleet_planner::ReplanRobots::Response replan(const fleet_planner::ReplanRobots::Request& request);
+
  private:
   void onTimer(const ros::TimerEvent& event);
+  /// Re-plans `robots` (monitor lock held) and reports a merge.
+  ReplanReport replanLocked(const std::vector<int>& robots, double time_limit);
   std::optional<geometry_msgs::Pose2D> poseOf(const std::string& robot_id) const;
 
   const PlannerConfig config_;
@@ -42,6 +59,8 @@ class ExecutionRunner {
   ros::Time last_diagnostics_;
   std::mutex mutex_;  ///< guards the monitor
   ExecutionMonitor monitor_;
+  RevisionCallback on_revised_;
+  std::map<std::string, ros::Time> last_attempt_;  ///< per robot: its last automatic re-plan
 };
 
 }  // namespace fleet_planner

@@ -7,7 +7,17 @@
 #include <fleet_planner/RobotTimeline.h>
 #include <nav_msgs/Path.h>
 
+#include "fleet_planner/model/grid_map.h"
+#include "fleet_planner/model/instance.h"
+#include "fleet_planner/model/plan.h"
+
 namespace fleet_planner {
+
+/// A robot's path as its timeline: a state per step (every `seconds_per_step`), in the map frame
+/// of `grid`, beginning and ending at its true start and target yaws; cost from its plan target.
+/// Its subproblem is left at -1.
+fleet_planner::RobotTimeline robotTimeline(const Robot& robot, const Path& path, const GridMap& grid,
+                                           double seconds_per_step);
 
 nav_msgs::Path toPathMessage(const fleet_planner::RobotTimeline& timeline, const std::string& frame,
                              const ros::Time& start, double seconds_per_step);

@@ -69,6 +69,8 @@ struct PlannerConfig {
   double blocked_timeout = 10.0;      ///< seconds waiting for another robot before BLOCKED
   double late_warning = 5.0;          ///< seconds behind the plan before the diagnostics warn
   double off_path_tolerance = 0.3;    ///< metres from its path before a robot is OFF_PATH
+  bool replan_blocked = true;         ///< re-plan a BLOCKED robot around the robot it waits for
+  double replan_time_limit = 1.0;     ///< seconds for one re-plan (the node's execution waits meanwhile)
 
   OccupancyPolicy occupancyPolicy() const { return {occupied_threshold, unknown_policy == "free"}; }
   PoseTolerance poseTolerance() const { return {position_tolerance, heading_tolerance}; }

@@ -45,6 +45,8 @@ class PlannerNode {
   bool onPlanFleet(fleet_planner::PlanFleet::Request& request, fleet_planner::PlanFleet::Response& response);
   bool lookupStart(const std::string& robot_id, geometry_msgs::Pose2D& pose, std::string& error);
   void publish(const PlanCall& call);
+  /// A re-plan merged into the running plan: its timelines and paths again, same stamp.
+  void publishRevision(const ExecutablePlan& plan, std::uint32_t revision, const ros::Time& plan_start);
   void onPlaybackTimer(const ros::TimerEvent& event);
 
   ros::NodeHandle nh_, private_nh_;
@@ -58,12 +60,15 @@ class PlannerNode {
   tf2_ros::TransformListener tf_listener_;
   tf2_ros::TransformBroadcaster tf_broadcaster_;
   ros::Subscriber map_sub_, fleet_sub_;
-  ros::ServiceServer plan_server_;
+  ros::ServiceServer plan_server_, replan_server_;
   ros::Publisher timelines_pub_, markers_pub_;
   std::map<std::string, ros::Publisher> path_pubs_;  ///< ~plans/<robot_id>, latched, by robot id
   ros::Timer playback_timer_;
 
   std::unique_ptr<ExecutionRunner> execution_;  ///< with parameter `execute`
+
+  std::mutex timelines_mutex_;  ///< guards timelines_ and path_pubs_
+  fleet_planner::FleetTimelines timelines_;  ///< as last published
 
   std::mutex playback_mutex_;  ///< guards the two below
   std::vector<fleet_planner::RobotTimeline> playing_;

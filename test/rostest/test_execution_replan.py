@@ -1,0 +1,97 @@
+#!/usr/bin/python3
+"""Re-planning during execution (execution_replan.test): tug_1 stops for 45 s right after the
+start; robots BLOCKED behind it are planned again around it while the others keep driving.
+
+Checks: every robot arrives, no two robots' footprints ever shared a cell (the planner's monitor,
+from TF), re-plans were merged (revisions of the same plan, followed by the simulator), and the
+robots that waited for tug_1 arrived before it moved again. ~replan answers an unknown robot with
+INVALID_REQUEST.
+
+Run: rostest fleet_planner execution_replan.test
+"""
+import threading
+import unittest
+
+import rospy
+import rostest
+
+from fleet_planner.msg import FleetExecution, FleetTimelines, RobotExecution
+from fleet_planner.ros_conversions import task_to_msg
+from fleet_planner.srv import PlanFleet, PlanFleetRequest, PlanFleetResponse, ReplanRobots, ReplanRobotsRequest, \
+    ReplanRobotsResponse
+from fleet_planner.tasks_config import load_tasks
+
+HELD = "tug_1"
+
+
+class ExecutionReplanTest(unittest.TestCase):
+    def test_robots_blocked_by_a_stopped_one_are_replanned_around_it(self):
+        rospy.init_node("test_execution_replan")
+        tasks = load_tasks(rospy.get_param("~tasks_file"))
+        seen = {"last": None, "waited_for_held": set(), "arrived_before_held": set(), "revisions": 0}
+        lock = threading.Lock()
+
+        def on_execution(msg):
+            with lock:
+                seen["last"] = msg
+                by_id = {r.robot_id: r for r in msg.robots}
+                held = by_id.get(HELD)
+                if held is None:
+                    return
+                for r in msg.robots:
+                    if r.blocked_by == HELD:
+                        seen["waited_for_held"].add(r.robot_id)
+                    if r.state == RobotExecution.ARRIVED and held.lateness > 10.0:  # still stopped
+                        seen["arrived_before_held"].add(r.robot_id)
+
+        def on_timelines(msg):
+            with lock:
+                seen["revisions"] = max(seen["revisions"], msg.revision)
+
+        rospy.Subscriber("/fleet_planner/execution", FleetExecution, on_execution)
+        rospy.Subscriber("/fleet_planner/timelines", FleetTimelines, on_timelines)
+        rospy.wait_for_service("/fleet_planner/plan_fleet", timeout=60)
+        rospy.wait_for_service("/fleet_planner/replan", timeout=60)
+        replan = rospy.ServiceProxy("/fleet_planner/replan", ReplanRobots)
+        self.assertEqual(replan(ReplanRobotsRequest()).status, ReplanRobotsResponse.NOT_EXECUTING)
+        plan = rospy.ServiceProxy("/fleet_planner/plan_fleet", PlanFleet)
+        request = PlanFleetRequest(tasks=[task_to_msg(t) for t in tasks], time_limit=30.0)
+        deadline = rospy.Time.now() + rospy.Duration(30)
+        response = plan(request)
+        while response.status in (PlanFleetResponse.NO_MAP, PlanFleetResponse.UNKNOWN_ROBOT) \
+                and rospy.Time.now() < deadline:  # map or registry not received yet
+            rospy.sleep(0.2)
+            response = plan(request)
+        self.assertEqual(response.status, PlanFleetResponse.SUCCESS, response.message)
+        bad = replan(ReplanRobotsRequest(robot_ids=["no_such_robot"]))
+        self.assertEqual(bad.status, ReplanRobotsResponse.INVALID_REQUEST)
+        self.assertIn("no_such_robot", bad.message)
+
+        deadline = rospy.Time.now() + rospy.Duration(180)
+        while not rospy.is_shutdown() and rospy.Time.now() < deadline:
+            with lock:
+                last = seen["last"]
+            if last is not None and last.done:
+                break
+            rospy.sleep(0.2)
+        with lock:
+            last = seen["last"]
+            summary = ("replans %s (refused %s, last: %s), revisions seen %d, collisions %s; waited for %s: %s; "
+                       "arrived before it moved: %s") % (
+                last and last.replans, last and last.replans_refused, last and last.last_replan, seen["revisions"],
+                last and last.collisions, HELD, sorted(seen["waited_for_held"]), sorted(seen["arrived_before_held"]))
+        rospy.loginfo("execution_replan: %s", summary)
+        self.assertIsNotNone(last, "no execution message")
+        self.assertTrue(last.done, "not every robot arrived: %s; %s" % (
+            [(r.robot_id, r.state, r.progress, r.last_state, r.blocked_by) for r in last.robots], summary))
+        self.assertEqual(last.collisions, 0, summary)
+        self.assertGreater(last.replans, 0, summary)
+        self.assertEqual(last.revision, last.replans)
+        self.assertEqual(seen["revisions"], last.revision, summary)
+        # Robots that waited for the stopped robot and were re-planned did not wait for it to move.
+        self.assertTrue(seen["waited_for_held"] & seen["arrived_before_held"], summary)
+        self.assertEqual(replan(ReplanRobotsRequest()).status, ReplanRobotsResponse.NOTHING_TO_DO)
+
+
+if __name__ == "__main__":
+    rostest.rosrun("fleet_planner", "execution_replan", ExecutionReplanTest)
