@@ -2,21 +2,27 @@
 """soak_driver: the rounds of scripts/fleet_soak, which runs it inside its ROS environment.
 
 Usage (through scripts/fleet_soak): --map MAP.yaml --fleet FLEET.yaml --robots N --rounds R
-    --seed S --slowdown F --stops K [--seconds-per-step 0.1] [--time-limit 30]
-    [--round-timeout 600] [--uncoordinated] [--json-out FILE]
+    --seed S --slowdown F --stops K [--stop-seconds 2] [--blocked-timeout 10] [--no-replan]
+    [--seconds-per-step 0.1] [--time-limit 30] [--round-timeout 600] [--uncoordinated]
+    [--json-out FILE]
 
 The fleet: N robots named <fleet id>_<k>, taking the fleet file's footprints in turn. They start
 at random free poses (fleet_planner.pose_sampling). Each round draws a new goal for every robot
 (a random free pose at a random yaw that the robot can reach alone from where it stands), plans
 the whole fleet from TF (start_from_tf) and waits until the execution reports every robot
-arrived. The fleet simulator makes each step up to F slower and holds K random robots for 2 s
-during each plan. A plan that fails gets new goals (up to 3 draws per round).
+arrived. The fleet simulator makes each step up to F slower and holds K random robots for
+--stop-seconds during each plan. The planner re-plans a robot BLOCKED (waiting longer than
+--blocked-timeout) around the robot it waits for (replan_blocked; --no-replan turns it off). A
+plan that fails gets new goals (up to 3 draws per round).
 
 Prints a line per round, then one JSON line: collisions (pairs of robots seen sharing a cell, the
 planner's monitor), goals_reached, goals_total, deadlocks (rounds not finished within
 --round-timeout), replans (plans made), plan_failures, replan_p50_s and replan_p95_s (plan call
-latency), rss_mb_first (the planner's resident memory after the first round), rss_mb_last,
-rss_growth (last / first - 1), wall_s. Exit status 1 on a collision or a deadlock.
+latency), execution_replans and execution_replans_refused (robots re-planned during the execution,
+and re-plans that found nothing safe), execution_replan_p50_s and execution_replan_p95_s (their
+latency, merged or refused), rss_mb_first (the planner's resident memory after the first round), rss_mb_last,
+rss_growth (last / first - 1), rounds_done (fewer than --rounds when interrupted: Ctrl-C ends
+the soak with the summary of the rounds done), wall_s. Exit status 1 on a collision or a deadlock.
 """
 import argparse
 import json
@@ -41,7 +47,6 @@ from fleet_planner.msg import FleetExecution, RobotExecution, RobotTask
 from fleet_planner.pose_sampling import PoseSampler
 from fleet_planner.srv import PlanFleet, PlanFleetRequest, PlanFleetResponse
 
-STOP_SECONDS = 2.0
 
 
 def fleet_yaml(robots):
@@ -85,10 +90,13 @@ def launch_xml(args, folder):
     <param name="seed" value="{seed}"/>
     <param name="uncoordinated" value="{uncoordinated}"/>
   </node>
+  <param name="/fleet_planner/blocked_timeout" value="{blocked_timeout}"/>
+  <param name="/fleet_planner/replan_blocked" value="{replan}"/>
 </launch>
 """.format(map=os.path.abspath(args.map), folder=folder, sps=args.seconds_per_step, slowdown=args.slowdown,
-           stops=args.stops, stop_seconds=STOP_SECONDS, seed=args.seed,
-           uncoordinated="true" if args.uncoordinated else "false")
+           stops=args.stops, stop_seconds=args.stop_seconds, seed=args.seed,
+           uncoordinated="true" if args.uncoordinated else "false", blocked_timeout=args.blocked_timeout,
+           replan="false" if args.no_replan else "true")
 
 
 def rss_mb(node):
@@ -124,6 +132,8 @@ class Soak:
                        for k in range(args.robots)]
         self.last = None
         self.lock = threading.Lock()
+        self.execution_replan_times = []  # seconds of each re-plan during the executions
+        self.seen_replans = (0, 0, 0)     # (plan, replans, refused) at the last message
 
     def draw_starts(self):
         taken, poses = [], []
@@ -152,6 +162,12 @@ class Soak:
     def on_execution(self, msg):
         with self.lock:
             self.last = msg
+            plan, replans, refused = self.seen_replans
+            if msg.plan != plan:
+                replans, refused = 0, 0
+            if msg.replans + msg.replans_refused > replans + refused:
+                self.execution_replan_times.append(msg.last_replan_time)
+            self.seen_replans = (msg.plan, msg.replans, msg.replans_refused)
 
     def current(self, tf):
         here = {}
@@ -181,6 +197,10 @@ def main(argv=None):
     p.add_argument("--seed", type=int, default=1)
     p.add_argument("--slowdown", type=float, default=0.5)
     p.add_argument("--stops", type=int, default=5)
+    p.add_argument("--stop-seconds", type=float, default=2.0, help="length of each stop")
+    p.add_argument("--blocked-timeout", type=float, default=10.0,
+                   help="seconds of waiting before a robot is BLOCKED, and re-planned")
+    p.add_argument("--no-replan", action="store_true", help="the planner does not re-plan BLOCKED robots")
     p.add_argument("--seconds-per-step", type=float, default=0.1)
     p.add_argument("--time-limit", type=float, default=30.0)
     p.add_argument("--round-timeout", type=float, default=600.0)
@@ -225,54 +245,20 @@ def run(soak, args, started):
     tf2_ros.TransformListener(tf)
     rospy.wait_for_service("/fleet_planner/plan_fleet", timeout=60)
     plan = rospy.ServiceProxy("/fleet_planner/plan_fleet", PlanFleet)
-    totals = dict(collisions=0, goals_reached=0, goals_total=0, deadlocks=0, replans=0, plan_failures=0)
-    latencies, rss_first, plans_done = [], None, 0
-    for rnd in range(1, args.rounds + 1):
-        here = soak.current(tf)
-        response = None
-        for _ in range(3):
-            goals = soak.draw_goals(here)
-            if goals is None:
-                continue
-            tasks = [RobotTask(robot_id=r, start_from_tf=True, goal=Pose2D(*goals[r])) for r, _ in soak.robots]
-            request = PlanFleetRequest(tasks=tasks, time_limit=args.time_limit, seed=rnd)
-            for _ in range(100):  # the map and the registry reach the planner asynchronously
-                t0 = time.monotonic()
-                response = plan(request)
-                if response.status not in (PlanFleetResponse.NO_MAP, PlanFleetResponse.UNKNOWN_ROBOT):
-                    break
-                time.sleep(0.3)
-            latencies.append(time.monotonic() - t0)
-            totals["replans"] += 1
-            if response.status == PlanFleetResponse.SUCCESS:
-                break
-            totals["plan_failures"] += 1
-            print("round %d: plan failed: %s" % (rnd, response.message[:200]), flush=True)
-        if response is None or response.status != PlanFleetResponse.SUCCESS:
-            continue
-        t1 = time.monotonic()
-        last, done = soak.wait_done(plans_done)
-        plans_done = last.plan if last is not None else plans_done
-        arrived = sum(r.state == RobotExecution.ARRIVED for r in last.robots) if last else 0
-        totals["goals_total"] += len(soak.robots)
-        totals["goals_reached"] += arrived
-        totals["collisions"] += last.collisions if last else 0
-        totals["deadlocks"] += 0 if done else 1
-        if not done and last is not None:
-            for r in last.robots:
-                if r.state != RobotExecution.ARRIVED:
-                    print("  not arrived: %s state %d progress %d/%d released %d blocked by '%s' late %.1f s"
-                          % (r.robot_id, r.state, r.progress, r.last_state, r.released, r.blocked_by, r.lateness),
-                          flush=True)
-        rss = rss_mb("/fleet_planner")
-        rss_first = rss if rss_first is None else rss_first
-        print("round %d/%d: planned in %.2f s, executed in %.1f s: %d/%d arrived, %d collisions%s, planner RSS %s MB"
-              % (rnd, args.rounds, latencies[-1], time.monotonic() - t1, arrived, len(soak.robots),
-                 last.collisions if last else 0, "" if done else ", NOT DONE", "%.1f" % rss if rss else "?"),
-              flush=True)
+    totals = dict(collisions=0, goals_reached=0, goals_total=0, deadlocks=0, replans=0, plan_failures=0,
+                  execution_replans=0, execution_replans_refused=0)
+    latencies, rss_first, plans_done, rounds_done = [], None, 0, 0
+    try:
+        for rnd in range(1, args.rounds + 1):
+            rss_first, plans_done = soak_round(soak, args, plan, tf, rnd, totals, latencies, rss_first, plans_done)
+            rounds_done = rnd
+    except KeyboardInterrupt:  # stopped early: the summary of the rounds done
+        print("fleet_soak: interrupted after %d rounds" % rounds_done, flush=True)
     rss_last = rss_mb("/fleet_planner")
-    result = dict(totals, robots=len(soak.robots), rounds=args.rounds,
+    result = dict(totals, robots=len(soak.robots), rounds=args.rounds, rounds_done=rounds_done,
                   replan_p50_s=percentile(latencies, 0.5), replan_p95_s=percentile(latencies, 0.95),
+                  execution_replan_p50_s=percentile(soak.execution_replan_times, 0.5),
+                  execution_replan_p95_s=percentile(soak.execution_replan_times, 0.95),
                   rss_mb_first=rss_first, rss_mb_last=rss_last,
                   rss_growth=(rss_last / rss_first - 1.0) if rss_first and rss_last else None,
                   wall_s=time.monotonic() - started)
@@ -282,6 +268,57 @@ def run(soak, args, started):
         with open(args.json_out, "w") as f:
             f.write(line + "\n")
     return 1 if totals["collisions"] or totals["deadlocks"] else 0
+
+
+def soak_round(soak, args, plan, tf, rnd, totals, latencies, rss_first, plans_done):
+    """One round: new goals, a plan, its execution. Returns (rss_first, plans_done)."""
+    here = soak.current(tf)
+    response = None
+    for _ in range(3):
+        goals = soak.draw_goals(here)
+        if goals is None:
+            continue
+        tasks = [RobotTask(robot_id=r, start_from_tf=True, goal=Pose2D(*goals[r])) for r, _ in soak.robots]
+        request = PlanFleetRequest(tasks=tasks, time_limit=args.time_limit, seed=rnd)
+        for _ in range(100):  # the map and the registry reach the planner asynchronously
+            t0 = time.monotonic()
+            response = plan(request)
+            if response.status not in (PlanFleetResponse.NO_MAP, PlanFleetResponse.UNKNOWN_ROBOT):
+                break
+            time.sleep(0.3)
+        latencies.append(time.monotonic() - t0)
+        totals["replans"] += 1
+        if response.status == PlanFleetResponse.SUCCESS:
+            break
+        totals["plan_failures"] += 1
+        print("round %d: plan failed: %s" % (rnd, response.message[:200]), flush=True)
+    if response is None or response.status != PlanFleetResponse.SUCCESS:
+        return rss_first, plans_done
+    t1 = time.monotonic()
+    last, done = soak.wait_done(plans_done)
+    plans_done = last.plan if last is not None else plans_done
+    arrived = sum(r.state == RobotExecution.ARRIVED for r in last.robots) if last else 0
+    totals["goals_total"] += len(soak.robots)
+    totals["goals_reached"] += arrived
+    totals["collisions"] += last.collisions if last else 0
+    totals["deadlocks"] += 0 if done else 1
+    totals["execution_replans"] += last.replans if last else 0
+    totals["execution_replans_refused"] += last.replans_refused if last else 0
+    if not done and last is not None:
+        for r in last.robots:
+            if r.state != RobotExecution.ARRIVED:
+                print("  not arrived: %s state %d progress %d/%d released %d blocked by '%s' late %.1f s"
+                      % (r.robot_id, r.state, r.progress, r.last_state, r.released, r.blocked_by, r.lateness),
+                      flush=True)
+    rss = rss_mb("/fleet_planner")
+    rss_first = rss if rss_first is None else rss_first
+    print("round %d/%d: planned in %.2f s, executed in %.1f s: %d/%d arrived, %d collisions, %d re-plans "
+          "(%d refused)%s, planner RSS %s MB"
+          % (rnd, args.rounds, latencies[-1], time.monotonic() - t1, arrived, len(soak.robots),
+             last.collisions if last else 0, last.replans if last else 0, last.replans_refused if last else 0,
+             "" if done else ", NOT DONE", "%.1f" % rss if rss else "?"),
+          flush=True)
+    return rss_first, plans_done
 
 
 if __name__ == "__main__":
