@@ -38,6 +38,9 @@ std::string requestProblem(const ReplanRequest& rq) {
     if (r < 0 || r >= static_cast<int>(n)) return "re-plan: no robot " + std::to_string(r);
     if (std::count(rq.robots.begin(), rq.robots.end(), r) > 1) return "re-plan: robot " + std::to_string(r) + " twice";
   }
+  for (const NewTarget& t : rq.targets) {
+    if (t.robot < 0 || t.robot >= static_cast<int>(n)) return "re-plan: no robot " + std::to_string(t.robot) + " for a new target";
+  }
   for (const AvoidedSteps& a : rq.avoid) {
     if (a.robot < 0 || a.robot >= static_cast<int>(n)) return "re-plan: no robot " + std::to_string(a.robot) + " to avoid";
   }
@@ -55,24 +58,66 @@ ReplanResult failure(SolveStatus status, std::string reason) {
 class Replanner {
  public:
   Replanner(const ReplanRequest& rq, std::vector<int> robots)
-      : rq_(rq), robots_(std::move(robots)), model_(rq.graphs->graph(0).actionModel()), plan_(*rq.plan) {
-    for (int a : robots_) start_time_ = std::max(start_time_, rq.released[a]);
+      : rq_(rq), robots_(std::move(robots)), model_(rq.graphs->graph(0).actionModel()), plan_(*rq.plan),
+        instance_(*rq.instance), conflicts_from_(rq.instance->robots.size(), 0) {
+    for (const NewTarget& t : rq.targets) {
+      instance_.robots[t.robot].target = t.target;
+      instance_.robots[t.robot].target_yaw = t.target_yaw;
+    }
+    bool all_arrived = true;
+    for (int a : robots_) {
+      start_time_ = std::max(start_time_, rq.released[a]);
+      all_arrived = all_arrived && rq.released[a] == lastState(a);
+    }
+    // Robots that have arrived start their new ways no earlier than the slowest other robot's
+    // progress: before it, the others' paths are what they have already driven.
+    if (all_arrived) {
+      int slowest = -1;
+      for (int j = 0; j < static_cast<int>(plan_.paths.size()); ++j) {
+        if (!std::count(robots_.begin(), robots_.end(), j)) slowest = slowest < 0 ? rq.progress[j] : std::min(slowest, rq.progress[j]);
+      }
+      start_time_ = std::max(start_time_, slowest);
+    }
   }
 
-  /// The robots' connections from their released states and to their targets.
+  /// The robots' connections from their released states to their targets. A robot that rests at
+  /// a yaw off the grid (its start yaw, not yet turned from, or its previous target's) turns from
+  /// it first.
   std::string connect() {
     Instance sub;
     for (int a : robots_) {
-      Robot r = rq_.instance->robots[a];
+      const Robot& old = rq_.instance->robots[a];
+      Robot r = instance_.robots[a];
       const int k = rq_.released[a];
       r.start = rq_.plan->paths[a][k];
-      if (k > 0) r.start_yaw.reset();  // its first step turned it from its start yaw already
+      r.start_turn = 0;
+      if (k == lastState(a) && old.target_yaw) {
+        r.start_yaw = old.target_yaw;
+        conflicts_from_[a] = k;  // its history becomes a rest there: it only meets steps done before it arrived
+      } else if (!old.start_yaw || k > old.start_turn) {
+        r.start_yaw.reset();  // it has turned from its start yaw already
+      }
       sub.robots.push_back(r);
     }
     sub_graphs_ = std::make_unique<FleetGraphs>(*rq_.graphs, robots_);
     lattice_ = connectToLattice(*rq_.map, sub, *sub_graphs_, model_.step);
+    bad_pose_ = !lattice_.problems.empty();
+    if (lattice_.problem.empty()) {
+      for (std::size_t i = 0; i < robots_.size(); ++i) {
+        Robot& r = instance_.robots[robots_[i]];
+        if (!sub.robots[i].start_yaw) continue;
+        r.start = lattice_.connections[i].prefix.front();
+        r.start_yaw = sub.robots[i].start_yaw;
+        r.start_turn = start_time_;
+      }
+    }
     return lattice_.problem;
   }
+
+  /// The problem is a start or target no lattice can connect (connectToLattice's problems).
+  bool badPose() const { return bad_pose_; }
+
+  int lastState(int robot) const { return static_cast<int>(rq_.plan->paths[robot].size()) - 1; }
 
   /// The robots' lattice paths around everybody else, from the time their connections end.
   SolveResult solveLattice() {
@@ -126,9 +171,12 @@ class Replanner {
     const Path& p = rq_.plan->paths[j];
     const int last = static_cast<int>(p.size()) - 1;
     MovingObstacle m{j, Path(p.begin() + from, p.begin() + to + 1)};
-    if (from == 0 && r.start_yaw) m.start_yaw = r.start_yaw;
+    if (from <= r.start_turn && r.start_yaw) {
+      m.start_yaw = r.start_yaw;
+      m.start_turn = r.start_turn - from;
+    }
     if (to == last && r.target_yaw) m.target_yaw = r.target_yaw;
-    const std::size_t turns = (m.start_yaw ? 1 : 0) + (m.target_yaw ? 1 : 0);
+    const std::size_t turns = (m.start_yaw ? m.start_turn + 1 : 0) + (m.target_yaw ? 1 : 0);
     if (m.path.size() < turns + 1) m.path.resize(turns + 1, m.path.back());
     return m;
   }
@@ -142,9 +190,13 @@ class Replanner {
     for (std::size_t i = 0; i < robots_.size(); ++i) {
       const int a = robots_[i];
       const Path& old = rq_.plan->paths[a];
-      Path p(old.begin(), old.begin() + rq_.released[a] + 1);
-      p.resize(static_cast<std::size_t>(start_time_) + 1, p.back());
       const Path& prefix = lattice_.connections[i].prefix;
+      // A robot resting at a yaw rests there from the start on (the same place, so its history
+      // keeps its cells), and turns when its new way begins.
+      Path p = instance_.robots[a].start_yaw && instance_.robots[a].start_turn == start_time_
+                   ? Path(1, prefix.front())
+                   : Path(old.begin(), old.begin() + rq_.released[a] + 1);
+      p.resize(static_cast<std::size_t>(start_time_) + 1, p.back());
       p.insert(p.end(), prefix.begin() + 1, prefix.end());
       p.resize(static_cast<std::size_t>(lattice_start) + 1, p.back());
       p.insert(p.end(), lattice_paths[i].begin() + 1, lattice_paths[i].end());
@@ -152,7 +204,7 @@ class Replanner {
       plan_.paths[a] = std::move(p);
     }
     const int n = static_cast<int>(plan_.paths.size());
-    std::vector<Robot> seen = rq_.instance->robots;  // re-planned robots end on their lattice targets until placed
+    std::vector<Robot> seen = instance_.robots;  // re-planned robots end on their lattice targets until placed
     for (int a : robots_) seen[a].target_yaw.reset();
     std::vector<std::unique_ptr<RobotCells>> cells(n);
     for (int j = 0; j < n; ++j) cells[j] = std::make_unique<RobotCells>(seen[j], rq_.graphs->cells(j), plan_.paths[j]);
@@ -164,7 +216,7 @@ class Replanner {
     for (std::size_t i : order) {
       const int a = robots_[i];
       const Path& suffix = lattice_.connections[i].suffix;
-      const Robot& robot = rq_.instance->robots[a];
+      const Robot& robot = instance_.robots[a];
       bool placed = suffix.size() == 1;
       for (int t = arrival[i]; !placed && t <= horizon + static_cast<int>(suffix.size()); ++t) {
         Path candidate(plan_.paths[a].begin(), plan_.paths[a].begin() + arrival[i] + 1);
@@ -206,6 +258,8 @@ class Replanner {
   }
 
   const Plan& plan() const { return plan_; }
+  const Instance& instance() const { return instance_; }
+  const std::vector<int>& conflictsFrom() const { return conflicts_from_; }
   int startTime() const { return start_time_; }
   const ActionModel& model() const { return model_; }
 
@@ -214,8 +268,11 @@ class Replanner {
   const std::vector<int> robots_;
   const ActionModel model_;
   Plan plan_;
+  Instance instance_;                ///< with the new targets and the rests at yaws
+  std::vector<int> conflicts_from_;  ///< per robot (validatePlan)
   int start_time_ = 0;
   int lattice_time_ = 0;
+  bool bad_pose_ = false;
   std::unique_ptr<FleetGraphs> sub_graphs_;
   LatticeInstance lattice_;
   Instance lattice_instance_;
@@ -234,34 +291,40 @@ ReplanResult replanRobots(const ReplanRequest& request) {
   for (int a : request.robots) {
     if (request.released[a] < static_cast<int>(request.plan->paths[a].size()) - 1) robots.push_back(a);
   }
+  for (const NewTarget& t : request.targets) robots.push_back(t.robot);
   std::sort(robots.begin(), robots.end());
+  robots.erase(std::unique(robots.begin(), robots.end()), robots.end());
   if (robots.empty()) {
     ReplanResult same;
     same.status = SolveStatus::Success;
     same.plan = *request.plan;
+    same.instance = *request.instance;
     same.dependencies = buildStepDependencies(*request.instance, same.plan, request.graphs->graph(0).actionModel());
     return finish(std::move(same));
   }
   try {
     Replanner replanner(request, robots);
-    if (std::string why = replanner.connect(); !why.empty()) return finish(failure(SolveStatus::Infeasible, why));
+    if (std::string why = replanner.connect(); !why.empty()) {
+      return finish(failure(replanner.badPose() ? SolveStatus::InvalidInput : SolveStatus::Infeasible, why));
+    }
     SolveResult solved = replanner.solveLattice();
     if (!solved.success()) return finish(failure(solved.status, solved.reason));
     std::string problem;
     if (!replanner.assemble(solved.paths, problem)) return finish(failure(SolveStatus::Infeasible, problem));
-    const ValidationResult check =
-        validatePlan(*request.map, *request.instance, replanner.plan(), replanner.model());
+    const ValidationResult check = validatePlan(*request.map, replanner.instance(), replanner.plan(),
+                                                replanner.model(), replanner.conflictsFrom());
     if (!check.valid()) {
       return finish(failure(SolveStatus::InternalError,
                             "internal error: the re-planned plan fails validation: " + check.violation.message + " (new paths from step " + std::to_string(replanner.startTime()) + ")"));
     }
     ReplanResult out;
-    out.dependencies = buildStepDependencies(*request.instance, replanner.plan(), replanner.model());
+    out.dependencies = buildStepDependencies(replanner.instance(), replanner.plan(), replanner.model());
     if (std::string why = replanner.releasesKept(out.dependencies); !why.empty()) {
       return finish(failure(SolveStatus::Infeasible, why));
     }
     out.status = SolveStatus::Success;
     out.plan = replanner.plan();
+    out.instance = replanner.instance();
     return finish(std::move(out));
   } catch (const InvalidInput& e) {
     return finish(failure(SolveStatus::InvalidInput, e.what()));

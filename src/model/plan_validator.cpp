@@ -59,8 +59,9 @@ std::vector<std::pair<int, int>> overlappingBoxes(const std::vector<Box>& boxes)
 
 class Checker {
  public:
-  Checker(const GridMap& map, const Instance& instance, const Plan& plan, const ActionModel& model)
-      : map_(map), instance_(instance), plan_(plan), model_(model) {}
+  Checker(const GridMap& map, const Instance& instance, const Plan& plan, const ActionModel& model,
+          const std::vector<int>& conflicts_from)
+      : map_(map), instance_(instance), plan_(plan), model_(model), from_(conflicts_from) {}
 
   Violation run() {
     const int n = static_cast<int>(instance_.robots.size());
@@ -129,6 +130,7 @@ class Checker {
         boxes[i] = boxOf(*sweeps[i], a);
       }
       for (const auto& [i, j] : overlappingBoxes(boxes)) {
+        if (!checked(i, j, t)) continue;
         const GridPose& a = stateAt(plan_.paths[i], t);
         const GridPose& b = stateAt(plan_.paths[j], t);
         if (CellSet::overlap(*sweeps[i], {a.x, a.y}, *sweeps[j], {b.x, b.y}))
@@ -141,6 +143,11 @@ class Checker {
   }
 
  private:
+  bool checked(int i, int j, int t) const {
+    auto from = [&](int r) { return r < static_cast<int>(from_.size()) ? from_[r] : 0; };
+    return t >= std::max(from(i), from(j));
+  }
+
   Violation vertexConflicts(int t) {
     const int n = static_cast<int>(cells_.size());
     std::vector<Box> boxes(n);
@@ -149,6 +156,7 @@ class Checker {
       boxes[i] = boxOf(motions_[i]->bodyAt(t), a);
     }
     for (const auto& [i, j] : overlappingBoxes(boxes)) {
+      if (!checked(i, j, t)) continue;
       const GridPose& a = stateAt(plan_.paths[i], t);
       const GridPose& b = stateAt(plan_.paths[j], t);
       if (CellSet::overlap(motions_[i]->bodyAt(t), {a.x, a.y}, motions_[j]->bodyAt(t), {b.x, b.y}))
@@ -178,6 +186,7 @@ class Checker {
   const Instance& instance_;
   const Plan& plan_;
   const ActionModel& model_;
+  const std::vector<int>& from_;
   std::vector<std::unique_ptr<FootprintCells>> cells_;
   std::vector<std::unique_ptr<RobotCells>> motions_;
 };
@@ -186,7 +195,12 @@ class Checker {
 
 ValidationResult validatePlan(const GridMap& map, const Instance& instance, const Plan& plan,
                               const ActionModel& model) {
-  return {Checker(map, instance, plan, model).run()};
+  return validatePlan(map, instance, plan, model, {});
+}
+
+ValidationResult validatePlan(const GridMap& map, const Instance& instance, const Plan& plan,
+                              const ActionModel& model, const std::vector<int>& conflicts_from) {
+  return {Checker(map, instance, plan, model, conflicts_from).run()};
 }
 
 const char* violationName(Violation::Kind kind) {

@@ -1,18 +1,26 @@
 // A robot's cells along its path; see robot_cells.h.
 #include "fleet_planner/model/robot_cells.h"
 
+#include <algorithm>
+
 namespace fleet_planner {
 
 RobotCells::RobotCells(const Robot& robot, const FootprintCells& cells, const Path& path)
     : cells_(cells), path_(path), last_(static_cast<int>(path.size()) - 1) {
-  const int turns = (robot.start_yaw ? 1 : 0) + (robot.target_yaw ? 1 : 0);
+  turn_ = robot.start_yaw ? std::max(0, robot.start_turn) : -1;
+  const int turns = (robot.start_yaw ? turn_ + 1 : 0) + (robot.target_yaw ? 1 : 0);
   if (path.empty()) return;
   if (last_ < turns) {
     shape_problem_ = "a path that turns from a start yaw or to a target yaw needs a step for each turn";
     return;
   }
   if (robot.start_yaw) {
-    if (path[1] != path[0]) shape_problem_ = "the first step must turn in place from the start yaw onto " + toString(path[0]);
+    for (int t = 1; t <= turn_ + 1; ++t) {
+      if (path[t] != path[0]) {
+        shape_problem_ = "the path must rest at its start yaw and turn in place onto " + toString(path[0]) +
+                         " by step " + std::to_string(turn_);
+      }
+    }
     start_body_ = footprintCellsAt(cells.footprint(), *robot.start_yaw);
     start_turn_ = turnSweep(cells.footprint(), *robot.start_yaw, headingYaw(path[0].heading));
   }
@@ -24,18 +32,20 @@ RobotCells::RobotCells(const Robot& robot, const FootprintCells& cells, const Pa
 }
 
 const CellSet& RobotCells::bodyAt(int t) const {
-  if (t <= 0 && start_body_) return *start_body_;
+  if (t <= turn_ && start_body_) return *start_body_;
   if (t >= last_ && end_body_) return *end_body_;
   return cells_.body(stateAt(path_, t).heading);
 }
 
 std::optional<Action> RobotCells::actionAt(int t, const ActionModel& model) const {
-  if ((t == 0 && start_turn_) || (t == last_ - 1 && end_turn_)) return Action::RotateCcw;
+  if ((t == turn_ && start_turn_) || (t == last_ - 1 && end_turn_)) return Action::RotateCcw;
+  if (t < turn_ && start_body_) return Action::Wait;
   return actionBetween(stateAt(path_, t), stateAt(path_, t + 1), model);
 }
 
 const CellSet* RobotCells::sweepAt(int t, const ActionModel& model) const {
-  if (t == 0 && start_turn_) return &*start_turn_;
+  if (t == turn_ && start_turn_) return &*start_turn_;
+  if (t < turn_ && start_body_) return &*start_body_;
   if (t == last_ - 1 && end_turn_) return &*end_turn_;
   if (t >= last_) return &bodyAt(t);
   const GridPose &from = stateAt(path_, t), &to = stateAt(path_, t + 1);

@@ -71,17 +71,7 @@ std::vector<int> ExecutionMonitor::blockedRobots() const {
 }
 
 ReplanReport ExecutionMonitor::replan(const std::vector<int>& robots, double time_limit) {
-  ReplanReport report;
-  const int n = static_cast<int>(ids_.size());
   ReplanRequest rq;
-  rq.map = plan_.map.get();
-  rq.instance = &plan_.instance;
-  rq.graphs = plan_.graphs.get();
-  rq.plan = &plan_.plan;
-  for (int i = 0; i < n; ++i) {
-    rq.progress.push_back(tracker_->progress(i));
-    rq.released.push_back(std::max<int>(rq.progress.back(), message_.robots[i].released));
-  }
   std::string names;
   for (int a : robots) {
     if (tracker_->done(a)) continue;
@@ -93,27 +83,68 @@ ReplanReport ExecutionMonitor::replan(const std::vector<int>& robots, double tim
     }
   }
   if (rq.robots.empty()) {
+    ReplanReport report;
     report.nothing_to_do = true;
     report.message = "every robot asked for has arrived";
     return report;
   }
+  return replanWith(std::move(rq), "re-planning " + names, time_limit);
+}
+
+ReplanReport ExecutionMonitor::assignGoals(const std::vector<std::pair<int, geometry_msgs::Pose2D>>& goals,
+                                           double time_limit, const PoseTolerance& tolerance) {
+  ReplanRequest rq;
+  std::string names;
+  for (const auto& [a, goal] : goals) {
+    const GridPoseFit fit = toGridPose(*plan_.map, goal, tolerance);
+    if (!fit.ok()) {
+      ReplanReport report;
+      report.invalid_goal = true;
+      report.message = "'" + ids_[a] + "': goal " + fit.error;
+      return report;
+    }
+    rq.targets.push_back({a, fit.pose, fit.yaw});
+    names += (names.empty() ? "'" : ", '") + ids_[a] + "'";
+  }
+  ReplanReport report = replanWith(std::move(rq), "new goals for " + names, time_limit);
+  report.invalid_goal = report.status == SolveStatus::InvalidInput;
+  return report;
+}
+
+ReplanReport ExecutionMonitor::replanWith(ReplanRequest rq, const std::string& names, double time_limit) {
+  ReplanReport report;
+  const int n = static_cast<int>(ids_.size());
+  rq.map = plan_.map.get();
+  rq.instance = &plan_.instance;
+  rq.graphs = plan_.graphs.get();
+  rq.plan = &plan_.plan;
+  for (int i = 0; i < n; ++i) {
+    rq.progress.push_back(tracker_->progress(i));
+    rq.released.push_back(std::max<int>(rq.progress.back(), message_.robots[i].released));
+  }
   if (!rq.graphs) {
-    report.message = "the running plan has no state graphs to re-plan on";
+    report.message = names + ": the running plan has no state graphs to plan on";
     return report;
   }
   rq.deadline = Deadline::in(time_limit);
   rq.seed = (static_cast<std::uint64_t>(plans_) << 20) + message_.revision;
-  const ReplanResult result = replanRobots(rq);
+  ReplanResult result = replanRobots(rq);
   report.time_s = result.time_s;
+  report.status = result.status;
   message_.last_replan_time = result.time_s;
   if (!result.success()) {
-    report.message = "re-planning " + names + ": " + statusName(result.status) + ": " + result.reason;
+    report.message = names + ": " + statusName(result.status) + ": " + result.reason;
     ++message_.replans_refused;
     message_.last_replan = report.message;
     return report;
   }
-  plan_.plan = result.plan;
-  for (int a : rq.robots) {
+  std::vector<int> changed;
+  for (int a = 0; a < n; ++a) {
+    if (result.plan.paths[a] != plan_.plan.paths[a]) changed.push_back(a);
+  }
+  plan_.plan = std::move(result.plan);
+  plan_.instance = std::move(result.instance);
+  for (int a : changed) {
     const auto timeline =
         robotTimeline(plan_.instance.robots[a], plan_.plan.paths[a], *plan_.map, seconds_per_step_);
     auto& poses = plan_.poses[a];
@@ -129,11 +160,12 @@ ReplanReport ExecutionMonitor::replan(const std::vector<int>& robots, double tim
   }
   tracker_ = std::make_unique<ExecutionTracker>(plan_.plan, result.dependencies, rq.progress);
   message_.dependencies = static_cast<std::uint32_t>(result.dependencies.count());
+  message_.done = tracker_->done();
   ++message_.revision;
   ++message_.replans;
   report.merged = true;
-  report.robots = rq.robots;
-  report.message = "re-planned " + names + " in " + std::to_string(result.time_s) + " s (revision " +
+  report.robots = changed;
+  report.message = names + ": planned in " + std::to_string(result.time_s) + " s (revision " +
                    std::to_string(message_.revision) + ")";
   message_.last_replan = report.message;
   return report;

@@ -1,6 +1,9 @@
 #include "fleet_planner/ros/execution_runner.h"
 
 #include <algorithm>
+#ifdef __GLIBC__
+#include <malloc.h>
+#endif
 
 #include <tf2/utils.h>
 
@@ -56,13 +59,65 @@ void ExecutionRunner::onRevised(RevisionCallback callback) {
 
 ReplanReport ExecutionRunner::replanLocked(const std::vector<int>& robots, double time_limit) {
   ReplanReport report = monitor_.replan(robots, time_limit);
+  reported(report);
+  return report;
+}
+
+void ExecutionRunner::reported(const ReplanReport& report) {
   if (report.merged) {
     ROS_INFO("fleet_planner: execution: %s", report.message.c_str());
     if (on_revised_) on_revised_(monitor_.plan(), monitor_.revision(), monitor_.stamp());
   } else if (!report.nothing_to_do) {
     ROS_WARN("fleet_planner: execution: %s", report.message.c_str());
   }
-  return report;
+#ifdef __GLIBC__
+  malloc_trim(0);  // a re-plan's tables are large and short-lived: a node re-planning all day keeps no peak
+#endif
+}
+
+fleet_planner::AddTasks::Response ExecutionRunner::addTasks(const fleet_planner::AddTasks::Request& request) {
+  using Response = fleet_planner::AddTasks::Response;
+  Response response;
+  try {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (!monitor_.running()) {
+      response.status = Response::NOT_EXECUTING;
+      response.message = "no plan is being executed";
+      return response;
+    }
+    auto invalid = [&](const std::string& why) {
+      response.status = Response::INVALID_REQUEST;
+      response.message = why;
+      return response;
+    };
+    if (!(request.time_limit >= 0.0) || request.time_limit > 3600.0) {
+      return invalid("time_limit must be in [0, 3600] s (0: the replan_time_limit parameter)");
+    }
+    if (request.tasks.empty()) return invalid("no task");
+    const auto& ids = monitor_.robotIds();
+    std::vector<std::pair<int, geometry_msgs::Pose2D>> goals;
+    for (const auto& task : request.tasks) {
+      const auto it = std::find(ids.begin(), ids.end(), task.robot_id);
+      if (it == ids.end()) return invalid("robot '" + task.robot_id + "' is not in the running plan");
+      const int a = static_cast<int>(it - ids.begin());
+      for (const auto& g : goals) {
+        if (g.first == a) return invalid("robot '" + task.robot_id + "' has two tasks");
+      }
+      goals.emplace_back(a, task.goal);
+    }
+    const ReplanReport report = monitor_.assignGoals(
+        goals, request.time_limit > 0.0 ? request.time_limit : config_.replan_time_limit, config_.poseTolerance());
+    reported(report);
+    response.status = report.merged ? Response::SUCCESS : report.invalid_goal ? Response::INVALID_REQUEST : Response::NO_PLAN;
+    response.message = report.message;
+    response.time = report.time_s;
+    for (int a : report.robots) response.planned.push_back(ids[a]);
+  } catch (const std::exception& e) {
+    response.status = Response::NO_PLAN;
+    response.message = std::string("internal error: ") + e.what();
+    ROS_ERROR("fleet_planner: add_tasks: %s", response.message.c_str());
+  }
+  return response;
 }
 
 fleet_planner::ReplanRobots::Response ExecutionRunner::replan(const fleet_planner::ReplanRobots::Request& request) {

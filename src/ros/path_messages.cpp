@@ -23,7 +23,7 @@ fleet_planner::RobotTimeline robotTimeline(const Robot& robot, const Path& path,
     const auto pose = toPose2D(grid, path[t]);
     state.x = pose.x, state.y = pose.y, state.yaw = pose.theta;
     // A start or goal off the grid headings: the timeline begins and ends at its true yaw.
-    if (t == 0 && robot.start_yaw) state.yaw = wrapAngle(*robot.start_yaw + grid.origin().yaw);
+    if (t <= robot.start_turn && robot.start_yaw) state.yaw = wrapAngle(*robot.start_yaw + grid.origin().yaw);
     if (t + 1 == static_cast<int>(path.size()) && robot.target_yaw) {
       state.yaw = wrapAngle(*robot.target_yaw + grid.origin().yaw);
     }

@@ -50,6 +50,14 @@ PlannerNode::PlannerNode(ros::NodeHandle nh, ros::NodeHandle private_nh, Planner
         },
         ros::VoidConstPtr(), &service_queue_);
     replan_server_ = private_nh_.advertiseService(replan);
+    auto add_tasks = ros::AdvertiseServiceOptions::create<fleet_planner::AddTasks>(
+        "add_tasks",
+        [this](fleet_planner::AddTasks::Request& request, fleet_planner::AddTasks::Response& response) {
+          response = execution_->addTasks(request);
+          return true;
+        },
+        ros::VoidConstPtr(), &service_queue_);
+    add_tasks_server_ = private_nh_.advertiseService(add_tasks);
   }
   if (service_.config().playback) {
     playback_timer_ = nh_.createTimer(ros::Duration(1.0 / kPlaybackHz), &PlannerNode::onPlaybackTimer, this);
@@ -164,12 +172,8 @@ void PlannerNode::publish(const PlanCall& call) {
       style.planned_frame_suffix = c.planned_frame;
     }
   }
-  auto markers = buildPlanMarkers(call.placements, r.timelines, r.subproblems, style);
   const ros::Time now = ros::Time::now();
-  for (auto& m : markers.markers) {
-    if (!m.frame_locked) m.header.stamp = now;  // frame-locked ones use the latest transform (stamp 0)
-  }
-  markers_pub_.publish(markers);
+  publishMarkers(buildPlanMarkers(call.placements, r.timelines, r.subproblems, style), now);
   if (r.status != fleet_planner::PlanFleet::Response::SUCCESS) return;
 
   fleet_planner::FleetTimelines timelines;
@@ -181,6 +185,9 @@ void PlannerNode::publish(const PlanCall& call) {
     std::lock_guard<std::mutex> lock(timelines_mutex_);
     timelines_pub_.publish(timelines);
     timelines_ = timelines;
+    placements_ = call.placements;
+    subproblems_ = r.subproblems;
+    marker_style_ = style;
     // Each robot's plan as a nav_msgs/Path, stamped with its planned times (latched, one topic each).
     for (const auto& timeline : r.timelines) {
       auto pub = path_pubs_.find(timeline.robot_id);
@@ -195,6 +202,13 @@ void PlannerNode::publish(const PlanCall& call) {
   std::lock_guard<std::mutex> lock(playback_mutex_);
   playing_ = r.timelines;
   playback_start_ = now;
+}
+
+void PlannerNode::publishMarkers(visualization_msgs::MarkerArray markers, const ros::Time& now) {
+  for (auto& m : markers.markers) {
+    if (!m.frame_locked) m.header.stamp = now;  // frame-locked ones use the latest transform (stamp 0)
+  }
+  markers_pub_.publish(markers);
 }
 
 void PlannerNode::publishRevision(const ExecutablePlan& plan, std::uint32_t revision, const ros::Time& plan_start) {
@@ -222,6 +236,7 @@ void PlannerNode::publishRevision(const ExecutablePlan& plan, std::uint32_t revi
     }
   }
   timelines_pub_.publish(timelines_);
+  publishMarkers(buildPlanMarkers(placements_, timelines_.timelines, subproblems_, marker_style_), ros::Time::now());
 }
 
 void PlannerNode::onPlaybackTimer(const ros::TimerEvent&) {

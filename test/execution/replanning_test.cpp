@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <map>
+#include <set>
 #include <iostream>
 #include <memory>
 
@@ -23,6 +24,23 @@ FleetGraphs graphsOf(const PlannedWorld& w) {
   std::vector<Footprint> footprints;
   for (const Robot& r : w.instance.robots) footprints.push_back(r.footprint);
   return FleetGraphs(w.map, footprints, w.model);
+}
+
+/// The map cells of a placed set.
+std::set<std::pair<int, int>> mapCells(const PlacedCells& p) {
+  std::set<std::pair<int, int>> out;
+  for (const Cell& c : p.cells->cells()) out.insert({p.at.x + c.x, p.at.y + c.y});
+  return out;
+}
+
+/// Every robot stands where it stood: its cells at its progress are the same in both plans.
+void checkStandsStill(const ReplanRequest& rq, const ReplanResult& r, const ActionModel& model,
+                      const std::string& where, std::vector<std::string>& failures) {
+  const PlanCells before(*rq.instance, *rq.plan, model), after(r.instance, r.plan, model);
+  for (int j = 0; j < before.robots(); ++j) {
+    if (mapCells(before.atRest(j, rq.progress[j])) != mapCells(after.atRest(j, rq.progress[j])))
+      failures.push_back(where + "robot " + std::to_string(j) + " covers other cells at its progress");
+  }
 }
 
 /// Plans, as a node would, every robot that waits for the stopped one `stopped`.
@@ -66,8 +84,9 @@ struct BlockedReplanner {
       check(rq, r, a);
       ++successes;
       SimulatedReplan next;
+      next.instance = std::make_shared<const Instance>(std::move(r.instance));
       next.plan = std::make_shared<const Plan>(std::move(r.plan));
-      next.cells = std::make_shared<const PlanCells>(world->instance, *next.plan, world->model);
+      next.cells = std::make_shared<const PlanCells>(*next.instance, *next.plan, world->model);
       next.dependencies = std::move(r.dependencies);
       current_ = next.plan;
       return next;
@@ -89,6 +108,7 @@ struct BlockedReplanner {
         failures.push_back(where + "its path up to its progress changed");
       if (j == a && (after.back() != before.back())) failures.push_back(where + "its new path ends elsewhere");
     }
+    checkStandsStill(rq, r, world->model, where, failures);
     const ExecutionTracker resumed(r.plan, r.dependencies, rq.progress);
     for (int j = 0; j < resumed.robots(); ++j) {
       if (j != a && resumed.releasedUpTo(j) < rq.released[j])
@@ -169,6 +189,97 @@ TEST(Replanning, AFollowerPassesARobotThatStoppedForGood) {
   for (const std::string& f : replanner.failures) ADD_FAILURE() << f;
   EXPECT_EQ(replanner.successes, 1);
   EXPECT_LT(passed.arrivals[1], 100.0);
+}
+
+/// Gives each robot that has arrived, while others still drive, a new target: back to its start
+/// (at its start yaw), once.
+struct GoalGiver {
+  const PlannedWorld* world = nullptr;
+  const FleetGraphs* graphs = nullptr;
+  std::uint64_t seed = 0;
+  std::shared_ptr<const Instance> instance;
+  std::shared_ptr<const Plan> plan;
+  std::vector<bool> given;
+  int asked = 0, made = 0;
+  std::vector<std::string> failures;
+
+  std::optional<SimulatedReplan> operator()(const ExecutionSnapshot& s) {
+    const ExecutionTracker& tracker = *s.tracker;
+    const int n = tracker.robots();
+    if (given.empty()) given.assign(n, false);
+    if (tracker.done()) return std::nullopt;
+    for (int a = 0; a < n; ++a) {
+      if (given[a] || !tracker.done(a)) continue;
+      given[a] = true;
+      const Instance& now = instance ? *instance : world->instance;
+      ReplanRequest rq;
+      rq.map = &world->map;
+      rq.instance = &now;
+      rq.graphs = graphs;
+      rq.plan = plan ? plan.get() : &world->plan;
+      for (int i = 0; i < n; ++i) {
+        rq.progress.push_back(tracker.progress(i));
+        rq.released.push_back(tracker.releasedUpTo(i));
+      }
+      const Robot& original = world->instance.robots[a];
+      rq.targets = {{a, original.start, original.start_yaw}};
+      rq.seed = seed;
+      rq.deadline = Deadline::in(5.0);
+      ++asked;
+      ReplanResult r = replanRobots(rq);
+      if (!r.success()) continue;
+      ++made;
+      check(rq, r, a);
+      SimulatedReplan next;
+      next.instance = instance = std::make_shared<const Instance>(std::move(r.instance));
+      next.plan = plan = std::make_shared<const Plan>(std::move(r.plan));
+      next.cells = std::make_shared<const PlanCells>(*next.instance, *next.plan, world->model);
+      next.dependencies = std::move(r.dependencies);
+      return next;
+    }
+    return std::nullopt;
+  }
+
+  void check(const ReplanRequest& rq, const ReplanResult& r, int a) {
+    const std::string where = world->name + " seed " + std::to_string(seed) + " robot " + std::to_string(a) + ": ";
+    const Robot& robot = r.instance.robots[a];
+    if (robot.target.x != world->instance.robots[a].start.x || robot.target.y != world->instance.robots[a].start.y)
+      failures.push_back(where + "its target is not its new one");
+    // Its history is a rest at its previous target from the time it arrived there: conflicts are
+    // checked from then on.
+    std::vector<int> from(r.plan.paths.size(), 0);
+    if (rq.instance->robots[a].target_yaw) from[a] = rq.progress[a];
+    const ValidationResult v = validatePlan(world->map, r.instance, r.plan, world->model, from);
+    if (!v.valid()) failures.push_back(where + "invalid plan: " + v.violation.message);
+    checkStandsStill(rq, r, world->model, where, failures);
+    for (std::size_t j = 0; j < r.plan.paths.size(); ++j) {
+      if (static_cast<int>(j) != a && r.plan.paths[j] != rq.plan->paths[j])
+        failures.push_back(where + "robot " + std::to_string(j) + "'s path changed");
+    }
+  }
+};
+
+TEST(Replanning, RobotsThatArriveGetNewGoalsWhileTheOthersDrive) {
+  int runs = 0, asked = 0, made = 0;
+  for (const PlannedWorld& w : testWorlds()) {
+    const FleetGraphs graphs = graphsOf(w);
+    const PlanCells cells(w.instance, w.plan, w.model);
+    const StepDependencies deps = buildStepDependencies(cells);
+    for (std::uint64_t seed = 0; seed < 4; ++seed) {
+      GoalGiver giver;
+      giver.world = &w;
+      giver.graphs = &graphs;
+      giver.seed = seed;
+      const SimulationResult r = simulateExecution(cells, &deps, DelayModel{}, seed, {}, std::ref(giver));
+      ASSERT_EQ(r.outcome, SimulationResult::Outcome::Completed) << w.name << " seed " << seed << ": " << r.message;
+      for (const std::string& f : giver.failures) ADD_FAILURE() << f;
+      asked += giver.asked;
+      made += giver.made;
+      ++runs;
+    }
+  }
+  std::cout << runs << " runs, " << asked << " new goals asked, " << made << " planned\n";
+  EXPECT_GE(made, asked / 3);
 }
 
 TEST(Replanning, SameRequestSamePlan) {

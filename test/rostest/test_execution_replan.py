@@ -5,23 +5,28 @@ start; robots BLOCKED behind it are planned again around it while the others kee
 Checks: every robot arrives, no two robots' footprints ever shared a cell (the planner's monitor,
 from TF), re-plans were merged (revisions of the same plan, followed by the simulator), and the
 robots that waited for tug_1 arrived before it moved again. ~replan answers an unknown robot with
-INVALID_REQUEST.
+INVALID_REQUEST. Then ~add_tasks sends two robots back to their starts while the others stand:
+they arrive there, still without contact.
 
 Run: rostest fleet_planner execution_replan.test
 """
+import math
 import threading
 import unittest
 
 import rospy
 import rostest
+import tf2_ros
 
 from fleet_planner.msg import FleetExecution, FleetTimelines, RobotExecution
 from fleet_planner.ros_conversions import task_to_msg
-from fleet_planner.srv import PlanFleet, PlanFleetRequest, PlanFleetResponse, ReplanRobots, ReplanRobotsRequest, \
-    ReplanRobotsResponse
+from fleet_planner.msg import RobotTask
+from fleet_planner.srv import AddTasks, AddTasksRequest, AddTasksResponse, PlanFleet, PlanFleetRequest, \
+    PlanFleetResponse, ReplanRobots, ReplanRobotsRequest, ReplanRobotsResponse
 from fleet_planner.tasks_config import load_tasks
 
 HELD = "tug_1"
+BACK = ["amr_3", "tug_1"]  # sent back to their starts once everybody has arrived
 
 
 class ExecutionReplanTest(unittest.TestCase):
@@ -54,6 +59,9 @@ class ExecutionReplanTest(unittest.TestCase):
         rospy.wait_for_service("/fleet_planner/replan", timeout=60)
         replan = rospy.ServiceProxy("/fleet_planner/replan", ReplanRobots)
         self.assertEqual(replan(ReplanRobotsRequest()).status, ReplanRobotsResponse.NOT_EXECUTING)
+        add_tasks = rospy.ServiceProxy("/fleet_planner/add_tasks", AddTasks)
+        home = [RobotTask(robot_id=t.robot_id, goal=task_to_msg(t).start) for t in tasks if t.robot_id in BACK]
+        self.assertEqual(add_tasks(AddTasksRequest(tasks=home)).status, AddTasksResponse.NOT_EXECUTING)
         plan = rospy.ServiceProxy("/fleet_planner/plan_fleet", PlanFleet)
         request = PlanFleetRequest(tasks=[task_to_msg(t) for t in tasks], time_limit=30.0)
         deadline = rospy.Time.now() + rospy.Duration(30)
@@ -81,6 +89,7 @@ class ExecutionReplanTest(unittest.TestCase):
                 last and last.replans, last and last.replans_refused, last and last.last_replan, seen["revisions"],
                 last and last.collisions, HELD, sorted(seen["waited_for_held"]), sorted(seen["arrived_before_held"]))
         rospy.loginfo("execution_replan: %s", summary)
+        added_after = last.revision if last else 0
         self.assertIsNotNone(last, "no execution message")
         self.assertTrue(last.done, "not every robot arrived: %s; %s" % (
             [(r.robot_id, r.state, r.progress, r.last_state, r.blocked_by) for r in last.robots], summary))
@@ -91,6 +100,30 @@ class ExecutionReplanTest(unittest.TestCase):
         # Robots that waited for the stopped robot and were re-planned did not wait for it to move.
         self.assertTrue(seen["waited_for_held"] & seen["arrived_before_held"], summary)
         self.assertEqual(replan(ReplanRobotsRequest()).status, ReplanRobotsResponse.NOTHING_TO_DO)
+
+        # New goals while the plan runs: back to their starts.
+        unknown = add_tasks(AddTasksRequest(tasks=[RobotTask(robot_id="no_such_robot")]))
+        self.assertEqual(unknown.status, AddTasksResponse.INVALID_REQUEST)
+        added = add_tasks(AddTasksRequest(tasks=home))
+        self.assertEqual(added.status, AddTasksResponse.SUCCESS, added.message)
+        self.assertEqual(sorted(added.planned), sorted(BACK))
+        deadline = rospy.Time.now() + rospy.Duration(120)
+        while not rospy.is_shutdown() and rospy.Time.now() < deadline:
+            rospy.sleep(0.3)
+            with lock:
+                last = seen["last"]
+            if last.done and last.revision > added_after:
+                break
+        self.assertTrue(last.done, "the new goals were not reached: %s" % [
+            (r.robot_id, r.state, r.progress, r.last_state, r.blocked_by) for r in last.robots])
+        self.assertEqual(last.collisions, 0)
+        buffer = tf2_ros.Buffer()
+        tf2_ros.TransformListener(buffer)
+        for t in tasks:
+            if t.robot_id in BACK:
+                pose = buffer.lookup_transform("map", t.robot_id + "/base_link", rospy.Time(0), rospy.Duration(5))
+                x, y = pose.transform.translation.x, pose.transform.translation.y
+                self.assertLess(math.hypot(x - t.start[0], y - t.start[1]), 0.11, t.robot_id)
 
 
 if __name__ == "__main__":

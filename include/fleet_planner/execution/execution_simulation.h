@@ -49,8 +49,9 @@ struct Hold {
 /// A new plan handed over during the execution (replanning.h): the robots keep their progress
 /// and the steps they are doing, which the new plan must keep.
 struct SimulatedReplan {
+  std::shared_ptr<const Instance> instance;
   std::shared_ptr<const Plan> plan;
-  std::shared_ptr<const PlanCells> cells;  ///< of *plan
+  std::shared_ptr<const PlanCells> cells;  ///< of *plan for *instance
   StepDependencies dependencies;
 };
 

@@ -24,10 +24,18 @@
 /// long time (a fault, a person): its steps up to the state named in `avoid` are kept clear for
 /// good (static obstacles), so the new way does not wait for it again.
 ///
+/// New targets (live goals). A robot may get a new target, arrived or not. One that has arrived
+/// at a yaw off the grid rests there: its path becomes that rest from step 0 until its new way
+/// begins (Robot::start_turn), a history it did not drive but which only meets steps other
+/// robots did before it arrived; conflicts of that history are not checked (validatePlan's
+/// conflicts_from) and its requirements on them are met. Robots that have all arrived begin
+/// their new ways no earlier than the slowest other robot's progress.
+///
 /// Connections. A re-planned robot's progress state may lie off its lattice (a start's or a
 /// target's connecting motion): it is connected again, as planFleet does (lattice.h), and its
 /// target's connection runs at the earliest step at which it meets nobody.
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -47,6 +55,13 @@ struct AvoidedSteps {
   int through = 0;
 };
 
+/// A new target for a robot (its goal changes while the others drive).
+struct NewTarget {
+  int robot = -1;
+  GridPose target;
+  std::optional<double> target_yaw;
+};
+
 struct ReplanRequest {
   const GridMap* map = nullptr;
   const Instance* instance = nullptr;   ///< the executing plan's robots (targets as planned)
@@ -56,6 +71,7 @@ struct ReplanRequest {
   std::vector<int> released;            ///< per robot: the state it may already drive to (>= progress)
   std::vector<int> robots;              ///< to plan again (instance indices), from their releases
   std::vector<AvoidedSteps> avoid;
+  std::vector<NewTarget> targets;  ///< robots given new targets (planned again too)
   std::string backend = "la_lns";  ///< a backend that avoids moving obstacles
   Deadline deadline;
   std::uint64_t seed = 0;
@@ -64,8 +80,11 @@ struct ReplanRequest {
 struct ReplanResult {
   SolveStatus status = SolveStatus::InvalidInput;
   std::string reason;  ///< names the robot where one is to blame
-  /// On success: the executing plan with the re-planned robots' new paths (same clock).
+  /// On success: the executing plan with the re-planned robots' new paths (same clock), and its
+  /// robots: the new targets, and, for a robot that rests at a yaw off the grid until its new way
+  /// begins, that rest (Robot::start_yaw, start_turn).
   Plan plan;
+  Instance instance;
   StepDependencies dependencies;  ///< of `plan`
   double time_s = 0.0;
   bool success() const { return status == SolveStatus::Success; }

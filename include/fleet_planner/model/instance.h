@@ -21,6 +21,11 @@ struct Robot {
   /// The yaw it must end at when that is not target.heading's: the plan's last step turns it in
   /// place from target.heading to this yaw (robot_cells.h).
   std::optional<double> target_yaw;
+  /// With a start yaw: the step of that turn; the robot rests at its start yaw until then (its
+  /// path repeats its first pose up to start_turn + 1). 0 for a plan from scratch; a robot given a
+  /// new goal while the fleet drives rests at its previous goal's yaw until its new way begins
+  /// (execution/replanning.h).
+  int start_turn = 0;
 };
 
 struct Instance {

@@ -9,6 +9,7 @@
 /// conflict (footprints overlap) and no transfer conflict (swept cells overlap). A robot whose
 /// path has ended stays at its target. The first violation is reported.
 #include <string>
+#include <vector>
 
 #include "fleet_planner/model/action.h"
 #include "fleet_planner/model/grid_map.h"
@@ -45,6 +46,12 @@ struct ValidationResult {
 /// Checks `plan` for `instance` on `map` under `model`.
 ValidationResult validatePlan(const GridMap& map, const Instance& instance, const Plan& plan,
                               const ActionModel& model = {});
+
+/// Same, with conflicts involving robot i checked only from step conflicts_from[i] on (empty:
+/// from 0): a plan revised during its execution, whose robot i was given a history it did not
+/// drive (execution/replanning.h) that only meets steps other robots have done.
+ValidationResult validatePlan(const GridMap& map, const Instance& instance, const Plan& plan,
+                              const ActionModel& model, const std::vector<int>& conflicts_from);
 
 /// "vertex conflict", "transfer conflict", ... (lower case, for messages).
 const char* violationName(Violation::Kind kind);

@@ -3,8 +3,8 @@
 /// each grid pose and during each step (footprint_cells.h), and, when it starts or ends at a yaw
 /// off the grid headings (Robot::start_yaw, target_yaw), its body there and the turn in place
 /// of its first or last step. Such a robot's path repeats its first pose (the step that turns
-/// it from its start yaw onto the heading) or its last pose (the step that turns it to its
-/// target yaw).
+/// it from its start yaw onto the heading; with Robot::start_turn, after resting at that yaw)
+/// or its last pose (the step that turns it to its target yaw).
 #include <optional>
 #include <string>
 #include <vector>
@@ -35,6 +35,7 @@ class RobotCells {
   const FootprintCells& cells_;
   const Path& path_;
   int last_;  ///< the path's last time
+  int turn_ = -1;  ///< the step of the turn from the start yaw (-1: none)
   std::optional<CellSet> start_body_, start_turn_, end_body_, end_turn_;
   std::string shape_problem_;
 };

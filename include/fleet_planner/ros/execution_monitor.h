@@ -22,6 +22,7 @@
 
 #include "fleet_planner/execution/execution_tracker.h"
 #include "fleet_planner/execution/replanning.h"
+#include "fleet_planner/ros/conversions.h"
 #include "fleet_planner/ros/fleet_planning_service.h"
 #include "fleet_planner/ros/progress_matching.h"
 
@@ -39,8 +40,10 @@ struct ExecutionSettings {
 struct ReplanReport {
   bool merged = false;      ///< the new paths are being executed
   bool nothing_to_do = false;  ///< every robot asked for has arrived
+  bool invalid_goal = false;   ///< a new goal off the map or blocked (message says which)
   std::string message;      ///< what was re-planned, or why not (names the robots)
   std::vector<int> robots;  ///< re-planned (plan order)
+  SolveStatus status = SolveStatus::Success;
   double time_s = 0.0;
 };
 
@@ -71,6 +74,10 @@ class ExecutionMonitor {
   /// the next steps of the robot it waits for, within `time_limit` seconds; merges the new paths
   /// when they keep every other robot released as far as it is. Requires running().
   ReplanReport replan(const std::vector<int>& robots, double time_limit);
+  /// New goals (map frame, any yaw) for some robots, planned like replan() (replanning.h: new
+  /// targets). A goal that cannot be put on the map within `tolerance` is refused (invalid_goal).
+  ReplanReport assignGoals(const std::vector<std::pair<int, geometry_msgs::Pose2D>>& goals, double time_limit,
+                           const PoseTolerance& tolerance);
 
   /// One update from the robots' current poses (plan order; nullopt: no pose known).
   /// Returns the execution's state. Requires running().
@@ -78,6 +85,8 @@ class ExecutionMonitor {
                                        const ros::Time& now);
 
  private:
+  /// Plans `rq` (robots, targets, avoid; the rest filled in here) and merges it on success.
+  ReplanReport replanWith(ReplanRequest rq, const std::string& names, double time_limit);
   int progressFrom(int robot, const geometry_msgs::Pose2D& pose) const;
   /// What the robot may drive through now: the dependencies' release, capped where its pose
   /// would be ambiguous (ProgressMatcher::releaseCap).

@@ -16,6 +16,7 @@
 #include <optional>
 #include <string>
 
+#include <fleet_planner/AddTasks.h>
 #include <fleet_planner/ReplanRobots.h>
 #include <fleet_planner/RobotExecution.h>
 #include <ros/ros.h>
@@ -42,11 +43,15 @@ class ExecutionRunner {
 
   /// The ~replan service: re-plans the robots named (empty: every BLOCKED one). Never throws.
   fleet_planner::ReplanRobots::Response replan(const fleet_planner::ReplanRobots::Request& request);
+  /// The ~add_tasks service: new goals for robots of the running plan. Never throws.
+  fleet_planner::AddTasks::Response addTasks(const fleet_planner::AddTasks::Request& request);
 
  private:
   void onTimer(const ros::TimerEvent& event);
   /// Re-plans `robots` (monitor lock held) and reports a merge.
   ReplanReport replanLocked(const std::vector<int>& robots, double time_limit);
+  /// Logs a re-plan, hands a merge to on_revised_ and gives freed memory back (lock held).
+  void reported(const ReplanReport& report);
   std::optional<geometry_msgs::Pose2D> poseOf(const std::string& robot_id) const;
 
   const PlannerConfig config_;

@@ -29,6 +29,8 @@
 #include "fleet_planner/ros/backend_loader.h"
 #include "fleet_planner/ros/execution_runner.h"
 #include "fleet_planner/ros/fleet_planning_service.h"
+#include "fleet_planner/ros/marker_builder.h"
+#include <visualization_msgs/MarkerArray.h>
 
 namespace fleet_planner {
 
@@ -46,6 +48,8 @@ class PlannerNode {
   bool lookupStart(const std::string& robot_id, geometry_msgs::Pose2D& pose, std::string& error);
   void publish(const PlanCall& call);
   /// A re-plan merged into the running plan: its timelines and paths again, same stamp.
+  /// The plan's markers, stamped `now` (but the frame-locked ones).
+  void publishMarkers(visualization_msgs::MarkerArray markers, const ros::Time& now);
   void publishRevision(const ExecutablePlan& plan, std::uint32_t revision, const ros::Time& plan_start);
   void onPlaybackTimer(const ros::TimerEvent& event);
 
@@ -60,15 +64,18 @@ class PlannerNode {
   tf2_ros::TransformListener tf_listener_;
   tf2_ros::TransformBroadcaster tf_broadcaster_;
   ros::Subscriber map_sub_, fleet_sub_;
-  ros::ServiceServer plan_server_, replan_server_;
+  ros::ServiceServer plan_server_, replan_server_, add_tasks_server_;
   ros::Publisher timelines_pub_, markers_pub_;
   std::map<std::string, ros::Publisher> path_pubs_;  ///< ~plans/<robot_id>, latched, by robot id
   ros::Timer playback_timer_;
 
   std::unique_ptr<ExecutionRunner> execution_;  ///< with parameter `execute`
 
-  std::mutex timelines_mutex_;  ///< guards timelines_ and path_pubs_
+  std::mutex timelines_mutex_;  ///< guards the plan as published (the five below) and path_pubs_
   fleet_planner::FleetTimelines timelines_;  ///< as last published
+  std::vector<RobotPlacement> placements_;   ///< of the last plan, for its markers
+  std::vector<fleet_planner::SubproblemInfo> subproblems_;
+  MarkerStyle marker_style_;
 
   std::mutex playback_mutex_;  ///< guards the two below
   std::vector<fleet_planner::RobotTimeline> playing_;

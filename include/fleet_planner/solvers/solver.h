@@ -39,6 +39,7 @@ struct MovingObstacle {
   /// The path's first step turns in place from this yaw, its last step to this one (as a
   /// Robot's, robot_cells.h): an executing robot's path cut from a full plan.
   std::optional<double> start_yaw = std::nullopt, target_yaw = std::nullopt;
+  int start_turn = 0;  ///< the step of the turn from start_yaw (Robot::start_turn)
 };
 
 struct Subproblem {

@@ -28,6 +28,7 @@ ReservationTable::ReservationTable(int width, int height, const std::vector<Movi
     const FootprintCells& cells = graphs.cells(m.robot);
     Robot shape;  // only its yaws: turns onto the path and off it (robot_cells.h)
     shape.start_yaw = m.start_yaw;
+    shape.start_turn = m.start_turn;
     shape.target_yaw = m.target_yaw;
     const RobotCells robot_cells(shape, cells, m.path);
     if (!robot_cells.shapeProblem().empty()) {
@@ -39,8 +40,8 @@ ReservationTable::ReservationTable(int width, int height, const std::vector<Movi
       auto take = [&](const CellSet& set, int last) {
         reserve(set, m.path[t], held ? 0 : t, held && m.held_for_good ? kForever : last);
       };
-      if ((t == 0 && m.start_yaw) || (t == end - 1 && m.target_yaw)) {
-        take(*robot_cells.sweepAt(t, model), t);  // a turn from or to a yaw
+      if ((t <= m.start_turn && m.start_yaw) || (t == end - 1 && m.target_yaw)) {
+        take(*robot_cells.sweepAt(t, model), t);  // a rest at or a turn from or to a yaw
         continue;
       }
       const auto action = actionBetween(m.path[t], m.path[t + 1], model);
