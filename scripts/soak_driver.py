@@ -4,7 +4,7 @@
 Usage (through scripts/fleet_soak): --map MAP.yaml --fleet FLEET.yaml --robots N --rounds R
     --seed S --slowdown F --stops K [--stop-seconds 2] [--blocked-timeout 10] [--no-replan]
     [--seconds-per-step 0.1] [--time-limit 30] [--round-timeout 600] [--uncoordinated]
-    [--json-out FILE]
+    [--live-goals] [--json-out FILE]
 
 The fleet: N robots named <fleet id>_<k>, taking the fleet file's footprints in turn. They start
 at random free poses (fleet_planner.pose_sampling). Each round draws a new goal for every robot
@@ -14,6 +14,12 @@ arrived. The fleet simulator makes each step up to F slower and holds K random r
 --stop-seconds during each plan. The planner re-plans a robot BLOCKED (waiting longer than
 --blocked-timeout) around the robot it waits for (replan_blocked; --no-replan turns it off). A
 plan that fails gets new goals (up to 3 draws per round).
+
+With --live-goals there is one plan, of every robot's first goal; then each robot, as soon as it
+arrives, gets its next goal through the planner's ~add_tasks while the others drive, until every
+robot has reached --rounds goals (a goal that cannot be planned is drawn again 2 s later). The
+latencies are then the add_tasks calls', replans counts them, and new_goals_planned those merged;
+deadlocks counts a stop after --round-timeout seconds without any goal reached.
 
 Prints a line per round, then one JSON line: collisions (pairs of robots seen sharing a cell, the
 planner's monitor), goals_reached, goals_total, deadlocks (rounds not finished within
@@ -45,7 +51,8 @@ from fleet_planner.fleet_config import load_fleet
 from fleet_planner.map_yaml import load_map
 from fleet_planner.msg import FleetExecution, RobotExecution, RobotTask
 from fleet_planner.pose_sampling import PoseSampler
-from fleet_planner.srv import PlanFleet, PlanFleetRequest, PlanFleetResponse
+from fleet_planner.srv import AddTasks, AddTasksRequest, AddTasksResponse, PlanFleet, PlanFleetRequest, \
+    PlanFleetResponse
 
 
 
@@ -159,6 +166,15 @@ class Soak:
             goals[robot_id] = self.sampler.metres(cell, self.rng.uniform(-math.pi, math.pi))
         return goals
 
+    def draw_goal(self, robot_id, here, goals):
+        """A new goal for one robot, reachable alone from `here` (x, y), clear of the other robots'
+        goals (robot id -> (x, y, yaw)); None if there is no room."""
+        f = dict(self.robots)[robot_id]
+        taken = [self.sampler.cell_of(g[0], g[1]) + (self.sampler.radius(dict(self.robots)[r]),)
+                 for r, g in goals.items() if r != robot_id]
+        cell = self.sampler.draw(f, taken, self.sampler.region_of(f, self.sampler.cell_of(*here)))
+        return None if cell is None else self.sampler.metres(cell, self.rng.uniform(-math.pi, math.pi))
+
     def on_execution(self, msg):
         with self.lock:
             self.last = msg
@@ -201,6 +217,9 @@ def main(argv=None):
     p.add_argument("--blocked-timeout", type=float, default=10.0,
                    help="seconds of waiting before a robot is BLOCKED, and re-planned")
     p.add_argument("--no-replan", action="store_true", help="the planner does not re-plan BLOCKED robots")
+    p.add_argument("--live-goals", action="store_true",
+                   help="one plan, then each robot gets its next goal (of --rounds) through ~add_tasks as soon "
+                        "as it arrives, while the others drive")
     p.add_argument("--seconds-per-step", type=float, default=0.1)
     p.add_argument("--time-limit", type=float, default=30.0)
     p.add_argument("--round-timeout", type=float, default=600.0)
@@ -249,9 +268,13 @@ def run(soak, args, started):
                   execution_replans=0, execution_replans_refused=0)
     latencies, rss_first, plans_done, rounds_done = [], None, 0, 0
     try:
-        for rnd in range(1, args.rounds + 1):
-            rss_first, plans_done = soak_round(soak, args, plan, tf, rnd, totals, latencies, rss_first, plans_done)
-            rounds_done = rnd
+        if args.live_goals:
+            rss_first, rounds_done = live_goals(soak, args, plan, tf, totals, latencies)
+        else:
+            for rnd in range(1, args.rounds + 1):
+                rss_first, plans_done = soak_round(soak, args, plan, tf, rnd, totals, latencies, rss_first,
+                                                   plans_done)
+                rounds_done = rnd
     except KeyboardInterrupt:  # stopped early: the summary of the rounds done
         print("fleet_soak: interrupted after %d rounds" % rounds_done, flush=True)
     rss_last = rss_mb("/fleet_planner")
@@ -268,6 +291,90 @@ def run(soak, args, started):
         with open(args.json_out, "w") as f:
             f.write(line + "\n")
     return 1 if totals["collisions"] or totals["deadlocks"] else 0
+
+
+def live_goals(soak, args, plan, tf, totals, latencies):
+    """--live-goals: one plan of every robot's first goal, then each robot's next goal through
+    ~add_tasks as soon as it arrives, until every robot reached --rounds goals. Latencies are the
+    add_tasks calls'. Returns (rss after the first goals, rounds every robot completed)."""
+    rospy.wait_for_service("/fleet_planner/add_tasks", timeout=60)
+    add = rospy.ServiceProxy("/fleet_planner/add_tasks", AddTasks)
+    here = soak.current(tf)
+    goals = soak.draw_goals(here)
+    if goals is None:
+        raise SystemExit("fleet_soak: no room for the first goals")
+    tasks = [RobotTask(robot_id=r, start_from_tf=True, goal=Pose2D(*goals[r])) for r, _ in soak.robots]
+    request = PlanFleetRequest(tasks=tasks, time_limit=args.time_limit, seed=1)
+    for _ in range(100):  # the map and the registry reach the planner asynchronously
+        response = plan(request)
+        if response.status not in (PlanFleetResponse.NO_MAP, PlanFleetResponse.UNKNOWN_ROBOT):
+            break
+        time.sleep(0.3)
+    totals["replans"] += 1
+    if response.status != PlanFleetResponse.SUCCESS:
+        raise SystemExit("fleet_soak: the first plan failed: %s" % response.message[:300])
+    reached = {r: 0 for r, _ in soak.robots}
+    totals["goals_total"] = args.rounds * len(soak.robots)
+    rss_first, progress_at, printed, planned = None, time.monotonic(), 0, 0
+    retry_at = {}
+    while min(reached.values()) < args.rounds and not rospy.is_shutdown():
+        time.sleep(0.2)
+        with soak.lock:
+            last = soak.last
+        if last is None:
+            continue
+        now = time.monotonic()
+        for r in last.robots:
+            if r.state != RobotExecution.ARRIVED or reached[r.robot_id] >= args.rounds or r.robot_id not in goals:
+                continue
+            if now < retry_at.get(r.robot_id, 0.0):
+                continue
+            pose = tf.lookup_transform("map", r.robot_id + "/base_link", rospy.Time(0), rospy.Duration(5))
+            x, y = pose.transform.translation.x, pose.transform.translation.y
+            goal = goals[r.robot_id]
+            if math.hypot(x - goal[0], y - goal[1]) < 0.2 and r.robot_id not in retry_at:
+                reached[r.robot_id] += 1
+                totals["goals_reached"] += 1
+                progress_at = now
+                if min(reached.values()) >= 1 and rss_first is None:
+                    rss_first = rss_mb("/fleet_planner")
+            retry_at.pop(r.robot_id, None)
+            if reached[r.robot_id] >= args.rounds:
+                continue
+            new_goal = soak.draw_goal(r.robot_id, (x, y), goals)
+            if new_goal is None:
+                retry_at[r.robot_id] = now + 2.0
+                continue
+            t0 = time.monotonic()
+            answer = add(AddTasksRequest(tasks=[RobotTask(robot_id=r.robot_id, goal=Pose2D(*new_goal))]))
+            latencies.append(time.monotonic() - t0)
+            totals["replans"] += 1
+            if answer.status == AddTasksResponse.SUCCESS:
+                goals[r.robot_id] = new_goal
+                planned += 1
+            else:
+                totals["plan_failures"] += 1
+                retry_at[r.robot_id] = now + 2.0  # another goal in a while
+        if now - progress_at > args.round_timeout:
+            totals["deadlocks"] += 1
+            print("fleet_soak: no goal reached for %.0f s: stopping" % args.round_timeout, flush=True)
+            break
+        done_rounds = min(reached.values())
+        if done_rounds > printed:
+            printed = done_rounds
+            rss = rss_mb("/fleet_planner")
+            print("every robot reached %d/%d goals: %d goals, %d collisions, %d new-goal plans (%d failed), %d re-plans "
+                  "(%d refused), planner RSS %s MB" % (
+                      done_rounds, args.rounds, totals["goals_reached"], last.collisions, totals["replans"],
+                      totals["plan_failures"], last.replans, last.replans_refused, "%.1f" % rss if rss else "?"),
+                  flush=True)
+    with soak.lock:
+        last = soak.last
+    totals["collisions"] = last.collisions if last else 0
+    totals["new_goals_planned"] = planned
+    totals["execution_replans"] = (last.replans if last else 0) - planned  # those of BLOCKED robots
+    totals["execution_replans_refused"] = last.replans_refused if last else 0
+    return rss_first, min(reached.values())
 
 
 def soak_round(soak, args, plan, tf, rnd, totals, latencies, rss_first, plans_done):

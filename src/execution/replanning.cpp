@@ -59,7 +59,7 @@ class Replanner {
  public:
   Replanner(const ReplanRequest& rq, std::vector<int> robots)
       : rq_(rq), robots_(std::move(robots)), model_(rq.graphs->graph(0).actionModel()), plan_(*rq.plan),
-        instance_(*rq.instance), conflicts_from_(rq.instance->robots.size(), 0) {
+        instance_(*rq.instance) {
     for (const NewTarget& t : rq.targets) {
       instance_.robots[t.robot].target = t.target;
       instance_.robots[t.robot].target_yaw = t.target_yaw;
@@ -93,7 +93,7 @@ class Replanner {
       r.start_turn = 0;
       if (k == lastState(a) && old.target_yaw) {
         r.start_yaw = old.target_yaw;
-        conflicts_from_[a] = k;  // its history becomes a rest there: it only meets steps done before it arrived
+        r.conflicts_from = k;  // its history becomes a rest there: it only meets steps done before it arrived
       } else if (!old.start_yaw || k > old.start_turn) {
         r.start_yaw.reset();  // it has turned from its start yaw already
       }
@@ -109,6 +109,7 @@ class Replanner {
         r.start = lattice_.connections[i].prefix.front();
         r.start_yaw = sub.robots[i].start_yaw;
         r.start_turn = start_time_;
+        r.conflicts_from = std::max(r.conflicts_from, sub.robots[i].conflicts_from);
       }
     }
     return lattice_.problem;
@@ -259,7 +260,6 @@ class Replanner {
 
   const Plan& plan() const { return plan_; }
   const Instance& instance() const { return instance_; }
-  const std::vector<int>& conflictsFrom() const { return conflicts_from_; }
   int startTime() const { return start_time_; }
   const ActionModel& model() const { return model_; }
 
@@ -269,7 +269,6 @@ class Replanner {
   const ActionModel model_;
   Plan plan_;
   Instance instance_;                ///< with the new targets and the rests at yaws
-  std::vector<int> conflicts_from_;  ///< per robot (validatePlan)
   int start_time_ = 0;
   int lattice_time_ = 0;
   bool bad_pose_ = false;
@@ -311,8 +310,8 @@ ReplanResult replanRobots(const ReplanRequest& request) {
     if (!solved.success()) return finish(failure(solved.status, solved.reason));
     std::string problem;
     if (!replanner.assemble(solved.paths, problem)) return finish(failure(SolveStatus::Infeasible, problem));
-    const ValidationResult check = validatePlan(*request.map, replanner.instance(), replanner.plan(),
-                                                replanner.model(), replanner.conflictsFrom());
+    const ValidationResult check =
+        validatePlan(*request.map, replanner.instance(), replanner.plan(), replanner.model());
     if (!check.valid()) {
       return finish(failure(SolveStatus::InternalError,
                             "internal error: the re-planned plan fails validation: " + check.violation.message + " (new paths from step " + std::to_string(replanner.startTime()) + ")"));

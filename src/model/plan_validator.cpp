@@ -59,9 +59,8 @@ std::vector<std::pair<int, int>> overlappingBoxes(const std::vector<Box>& boxes)
 
 class Checker {
  public:
-  Checker(const GridMap& map, const Instance& instance, const Plan& plan, const ActionModel& model,
-          const std::vector<int>& conflicts_from)
-      : map_(map), instance_(instance), plan_(plan), model_(model), from_(conflicts_from) {}
+  Checker(const GridMap& map, const Instance& instance, const Plan& plan, const ActionModel& model)
+      : map_(map), instance_(instance), plan_(plan), model_(model) {}
 
   Violation run() {
     const int n = static_cast<int>(instance_.robots.size());
@@ -144,8 +143,7 @@ class Checker {
 
  private:
   bool checked(int i, int j, int t) const {
-    auto from = [&](int r) { return r < static_cast<int>(from_.size()) ? from_[r] : 0; };
-    return t >= std::max(from(i), from(j));
+    return t >= std::max(instance_.robots[i].conflicts_from, instance_.robots[j].conflicts_from);
   }
 
   Violation vertexConflicts(int t) {
@@ -186,7 +184,6 @@ class Checker {
   const Instance& instance_;
   const Plan& plan_;
   const ActionModel& model_;
-  const std::vector<int>& from_;
   std::vector<std::unique_ptr<FootprintCells>> cells_;
   std::vector<std::unique_ptr<RobotCells>> motions_;
 };
@@ -195,12 +192,7 @@ class Checker {
 
 ValidationResult validatePlan(const GridMap& map, const Instance& instance, const Plan& plan,
                               const ActionModel& model) {
-  return validatePlan(map, instance, plan, model, {});
-}
-
-ValidationResult validatePlan(const GridMap& map, const Instance& instance, const Plan& plan,
-                              const ActionModel& model, const std::vector<int>& conflicts_from) {
-  return {Checker(map, instance, plan, model, conflicts_from).run()};
+  return {Checker(map, instance, plan, model).run()};
 }
 
 const char* violationName(Violation::Kind kind) {

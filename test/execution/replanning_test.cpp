@@ -227,6 +227,7 @@ struct GoalGiver {
       rq.deadline = Deadline::in(5.0);
       ++asked;
       ReplanResult r = replanRobots(rq);
+      if (r.status == SolveStatus::InternalError) failures.push_back(world->name + ": " + r.reason);
       if (!r.success()) continue;
       ++made;
       check(rq, r, a);
@@ -246,10 +247,16 @@ struct GoalGiver {
     if (robot.target.x != world->instance.robots[a].start.x || robot.target.y != world->instance.robots[a].start.y)
       failures.push_back(where + "its target is not its new one");
     // Its history is a rest at its previous target from the time it arrived there: conflicts are
-    // checked from then on.
-    std::vector<int> from(r.plan.paths.size(), 0);
-    if (rq.instance->robots[a].target_yaw) from[a] = rq.progress[a];
-    const ValidationResult v = validatePlan(world->map, r.instance, r.plan, world->model, from);
+    // checked from then on, and earlier new goals' histories likewise.
+    for (std::size_t j = 0; j < r.instance.robots.size(); ++j) {
+      const int expected = static_cast<int>(j) == a && rq.instance->robots[a].target_yaw
+                               ? rq.progress[a]
+                               : rq.instance->robots[j].conflicts_from;
+      if (r.instance.robots[j].conflicts_from != expected)
+        failures.push_back(where + "robot " + std::to_string(j) + " is checked from step " +
+                           std::to_string(r.instance.robots[j].conflicts_from));
+    }
+    const ValidationResult v = validatePlan(world->map, r.instance, r.plan, world->model);
     if (!v.valid()) failures.push_back(where + "invalid plan: " + v.violation.message);
     checkStandsStill(rq, r, world->model, where, failures);
     for (std::size_t j = 0; j < r.plan.paths.size(); ++j) {

@@ -27,8 +27,8 @@
 /// New targets (live goals). A robot may get a new target, arrived or not. One that has arrived
 /// at a yaw off the grid rests there: its path becomes that rest from step 0 until its new way
 /// begins (Robot::start_turn), a history it did not drive but which only meets steps other
-/// robots did before it arrived; conflicts of that history are not checked (validatePlan's
-/// conflicts_from) and its requirements on them are met. Robots that have all arrived begin
+/// robots did before it arrived; conflicts of that history are not checked
+/// (Robot::conflicts_from) and its requirements on them are met. Robots that have all arrived begin
 /// their new ways no earlier than the slowest other robot's progress.
 ///
 /// Connections. A re-planned robot's progress state may lie off its lattice (a start's or a

@@ -26,6 +26,11 @@ struct Robot {
   /// new goal while the fleet drives rests at its previous goal's yaw until its new way begins
   /// (execution/replanning.h).
   int start_turn = 0;
+  /// Conflicts of its path with other robots' are checked from this step on (validatePlan). 0
+  /// for a plan from scratch; after a new goal given while the fleet drives, the step it arrived
+  /// at its previous goal: before it, its path is the rest there, a history it did not drive
+  /// that only meets steps other robots had done (execution/replanning.h).
+  int conflicts_from = 0;
 };
 
 struct Instance {

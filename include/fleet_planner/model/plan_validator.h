@@ -43,15 +43,10 @@ struct ValidationResult {
   Violation violation;
 };
 
-/// Checks `plan` for `instance` on `map` under `model`.
+/// Checks `plan` for `instance` on `map` under `model`. Conflicts involving a robot are checked
+/// from its Robot::conflicts_from on.
 ValidationResult validatePlan(const GridMap& map, const Instance& instance, const Plan& plan,
                               const ActionModel& model = {});
-
-/// Same, with conflicts involving robot i checked only from step conflicts_from[i] on (empty:
-/// from 0): a plan revised during its execution, whose robot i was given a history it did not
-/// drive (execution/replanning.h) that only meets steps other robots have done.
-ValidationResult validatePlan(const GridMap& map, const Instance& instance, const Plan& plan,
-                              const ActionModel& model, const std::vector<int>& conflicts_from);
 
 /// "vertex conflict", "transfer conflict", ... (lower case, for messages).
 const char* violationName(Violation::Kind kind);
