@@ -19,6 +19,8 @@ With --live-goals there is one plan, of every robot's first goal; then each robo
 arrives, gets its next goal through the planner's ~add_tasks while the others drive, until every
 robot has reached --rounds goals (a goal that cannot be planned is drawn again 2 s later). The
 latencies are then the add_tasks calls', replans counts them, and new_goals_planned those merged;
+the K stops of a round become a chance of K / (100 N) that a robot stops before a step (about K
+stops per N goals of some 100 steps);
 deadlocks counts a stop after --round-timeout seconds without any goal reached.
 
 Prints a line per round, then one JSON line: collisions (pairs of robots seen sharing a cell, the
@@ -93,6 +95,7 @@ def launch_xml(args, folder):
     <param name="rate" value="50"/>
     <param name="slowdown" value="{slowdown}"/>
     <param name="stops_per_plan" value="{stops}"/>
+    <param name="stop_probability" value="{stop_probability}"/>
     <param name="stop_seconds" value="{stop_seconds}"/>
     <param name="seed" value="{seed}"/>
     <param name="uncoordinated" value="{uncoordinated}"/>
@@ -101,7 +104,8 @@ def launch_xml(args, folder):
   <param name="/fleet_planner/replan_blocked" value="{replan}"/>
 </launch>
 """.format(map=os.path.abspath(args.map), folder=folder, sps=args.seconds_per_step, slowdown=args.slowdown,
-           stops=args.stops, stop_seconds=args.stop_seconds, seed=args.seed,
+           stops=0 if args.live_goals else args.stops, stop_seconds=args.stop_seconds, seed=args.seed,
+           stop_probability=args.stops / (100.0 * args.robots) if args.live_goals else 0.0,
            uncoordinated="true" if args.uncoordinated else "false", blocked_timeout=args.blocked_timeout,
            replan="false" if args.no_replan else "true")
 
@@ -226,6 +230,10 @@ def main(argv=None):
     p.add_argument("--uncoordinated", action="store_true", help="the simulator ignores the releases")
     p.add_argument("--json-out", default="")
     args = p.parse_args(argv)
+    # Ctrl-C and SIGTERM end the soak with its summary, also when started in the background
+    # (where a non-interactive shell leaves SIGINT ignored).
+    signal.signal(signal.SIGINT, signal.default_int_handler)
+    signal.signal(signal.SIGTERM, signal.default_int_handler)
     started = time.monotonic()
     soak = Soak(args)
     folder = os.environ["ROS_HOME"]
