@@ -7,6 +7,7 @@
 
 #include <tf2/utils.h>
 
+#include "fleet_planner/ros/marker_builder.h"
 #include "fleet_planner/ros/path_messages.h"
 
 namespace fleet_planner {
@@ -34,6 +35,7 @@ ExecutionRunner::ExecutionRunner(ros::NodeHandle nh, ros::NodeHandle private_nh,
     : config_(config), tf_(tf), private_nh_(private_nh), monitor_(executionSettings(config)) {
   execution_pub_ = private_nh_.advertise<fleet_planner::FleetExecution>("execution", 1, true);
   diagnostics_pub_ = nh.advertise<diagnostic_msgs::DiagnosticArray>("/diagnostics", 10);
+  markers_pub_ = private_nh_.advertise<visualization_msgs::MarkerArray>("execution_markers", 1, true);
   timer_ = nh.createTimer(ros::Duration(1.0 / config.execution_rate), &ExecutionRunner::onTimer, this);
 }
 
@@ -203,6 +205,10 @@ void ExecutionRunner::onTimer(const ros::TimerEvent&) {
       if (sent != last_sent_.end() && sameRelease(sent->second, robot)) continue;
       robot_pubs_[robot.robot_id].publish(robot);
       last_sent_[robot.robot_id] = robot;
+    }
+    if ((now - last_markers_).toSec() >= 0.5) {
+      markers_pub_.publish(buildExecutionMarkers(execution, config_.base_frame, config_.late_warning));
+      last_markers_ = now;
     }
     if ((now - last_diagnostics_).toSec() >= 1.0) {
       diagnostics_pub_.publish(executionDiagnostics(execution, executionSettings(config_), now));

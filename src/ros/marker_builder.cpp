@@ -155,4 +155,52 @@ visualization_msgs::MarkerArray buildPlanMarkers(const std::vector<RobotPlacemen
   return array;
 }
 
+visualization_msgs::MarkerArray buildExecutionMarkers(const fleet_planner::FleetExecution& execution,
+                                                      const std::string& base_frame, double late_warning) {
+  using Robot = fleet_planner::RobotExecution;
+  visualization_msgs::MarkerArray out;
+  visualization_msgs::Marker clear;
+  clear.ns = "execution";
+  clear.action = visualization_msgs::Marker::DELETEALL;
+  out.markers.push_back(clear);
+  auto colour = [](double r, double g, double b) {
+    std_msgs::ColorRGBA c;
+    c.r = r, c.g = g, c.b = b, c.a = 1.0;
+    return c;
+  };
+  for (std::size_t i = 0; i < execution.robots.size(); ++i) {
+    const Robot& r = execution.robots[i];
+    std::string text;
+    std_msgs::ColorRGBA c = colour(1.0, 0.55, 0.0);
+    const std::string by = r.blocked_by.empty() ? "" : " " + r.blocked_by;
+    if (r.state == Robot::BLOCKED) {
+      text = "BLOCKED" + (by.empty() ? "" : " by" + by), c = colour(0.9, 0.1, 0.1);
+    } else if (r.state == Robot::NO_POSE || r.state == Robot::OFF_PATH) {
+      text = r.state == Robot::NO_POSE ? "NO POSE" : "OFF PATH", c = colour(0.9, 0.1, 0.1);
+    } else if (r.state == Robot::ARRIVED) {
+      text = "arrived", c = colour(0.1, 0.7, 0.2);
+    } else if (r.state == Robot::WAITING && !by.empty()) {
+      text = "waits for" + by;
+    } else if (r.lateness > late_warning) {
+      text = "late " + std::to_string(static_cast<int>(r.lateness)) + " s";
+    }
+    if (text.empty()) continue;
+    visualization_msgs::Marker m;
+    m.header.frame_id = r.robot_id + "/" + base_frame;
+    m.frame_locked = true;
+    m.ns = "execution";
+    m.id = static_cast<int>(i);
+    m.type = visualization_msgs::Marker::TEXT_VIEW_FACING;
+    m.action = visualization_msgs::Marker::ADD;
+    m.pose.position.y = -0.45;
+    m.pose.position.z = 0.5;
+    m.pose.orientation.w = 1.0;
+    m.scale.z = 0.3;
+    m.color = c;
+    m.text = text;
+    out.markers.push_back(m);
+  }
+  return out;
+}
+
 }  // namespace fleet_planner

@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <map>
 #include <set>
 
 #include "fleet_planner/ros/marker_builder.h"
@@ -106,3 +107,38 @@ TEST(MarkerBuilder, ColoursAreValidAndDistinctForNearbySubproblems) {
 
 }  // namespace
 }  // namespace fleet_planner::test
+
+namespace fleet_planner {
+namespace {
+
+TEST(ExecutionMarkers, BlockedWaitingLateAndArrivedRobotsAreMarkedOnTheirFrames) {
+  using Robot = fleet_planner::RobotExecution;
+  fleet_planner::FleetExecution execution;
+  auto robot = [&](const std::string& id, std::uint8_t state, const std::string& by, double late) {
+    Robot r;
+    r.robot_id = id, r.state = state, r.blocked_by = by, r.lateness = late;
+    execution.robots.push_back(r);
+  };
+  robot("a", Robot::BLOCKED, "b", 12.0);
+  robot("b", Robot::DRIVING, "", 1.0);  // on time: no marker
+  robot("c", Robot::WAITING, "a", 0.0);
+  robot("d", Robot::DRIVING, "", 9.5);
+  robot("e", Robot::ARRIVED, "", 0.0);
+  const auto markers = buildExecutionMarkers(execution, "base_link", 5.0);
+  ASSERT_EQ(markers.markers.size(), 5u);
+  EXPECT_EQ(markers.markers[0].action, visualization_msgs::Marker::DELETEALL);
+  std::map<std::string, std::string> text;
+  for (std::size_t i = 1; i < markers.markers.size(); ++i) {
+    const auto& m = markers.markers[i];
+    EXPECT_TRUE(m.frame_locked);
+    text[m.header.frame_id] = m.text;
+  }
+  EXPECT_EQ(text["a/base_link"], "BLOCKED by b");
+  EXPECT_EQ(text["c/base_link"], "waits for a");
+  EXPECT_EQ(text["d/base_link"], "late 9 s");
+  EXPECT_EQ(text["e/base_link"], "arrived");
+  EXPECT_EQ(text.count("b/base_link"), 0u);
+}
+
+}  // namespace
+}  // namespace fleet_planner

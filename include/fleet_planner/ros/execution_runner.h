@@ -57,11 +57,11 @@ class ExecutionRunner {
   const PlannerConfig config_;
   tf2_ros::Buffer& tf_;
   ros::NodeHandle private_nh_;
-  ros::Publisher execution_pub_, diagnostics_pub_;
+  ros::Publisher execution_pub_, diagnostics_pub_, markers_pub_;
   std::map<std::string, ros::Publisher> robot_pubs_;
   std::map<std::string, fleet_planner::RobotExecution> last_sent_;
   ros::Timer timer_;
-  ros::Time last_diagnostics_;
+  ros::Time last_diagnostics_, last_markers_;
   std::mutex mutex_;  ///< guards the monitor
   ExecutionMonitor monitor_;
   RevisionCallback on_revised_;

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include <fleet_planner/FleetExecution.h>
 #include <fleet_planner/RobotTimeline.h>
 #include <fleet_planner/SubproblemInfo.h>
 #include <std_msgs/ColorRGBA.h>
@@ -28,6 +29,13 @@ visualization_msgs::MarkerArray buildPlanMarkers(const std::vector<RobotPlacemen
                                                  const std::vector<fleet_planner::RobotTimeline>& timelines,
                                                  const std::vector<fleet_planner::SubproblemInfo>& subproblems,
                                                  const MarkerStyle& style);
+
+/// The execution's state over each robot (namespace "execution", frame-locked to
+/// "<robot_id>/<base_frame>"): nothing while it drives on time; "waits for <robot>" (orange),
+/// "BLOCKED by <robot>" (red), "late N s" (orange), "NO POSE" / "OFF PATH" (red), "arrived"
+/// (green). Marker ids are the robots' indices; a DELETEALL first.
+visualization_msgs::MarkerArray buildExecutionMarkers(const fleet_planner::FleetExecution& execution,
+                                                      const std::string& base_frame, double late_warning);
 
 /// The outline of a footprint (metres, robot frame), closed: first point repeated at the end.
 /// Circles become 32-gons.
