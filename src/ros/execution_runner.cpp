@@ -77,24 +77,48 @@ void ExecutionRunner::reported(const ReplanReport& report) {
 #endif
 }
 
-fleet_planner::AddTasks::Response ExecutionRunner::addTasks(const fleet_planner::AddTasks::Request& request) {
-  using Response = fleet_planner::AddTasks::Response;
+namespace {
+
+/// A service's answer from a re-plan's report (`robots`: its list of robot ids).
+template <class Response>
+void answer(const ReplanReport& report, const std::vector<std::string>& ids, Response& response,
+            std::vector<std::string>& robots) {
+  response.message = report.message;
+  response.time = report.time_s;
+  for (int a : report.robots) robots.push_back(ids[a]);
+}
+
+}  // namespace
+
+template <class Response, class Body>
+Response ExecutionRunner::serve(const char* name, double time_limit, Body&& body) {
   Response response;
   try {
     std::lock_guard<std::mutex> lock(mutex_);
     if (!monitor_.running()) {
       response.status = Response::NOT_EXECUTING;
       response.message = "no plan is being executed";
-      return response;
+    } else if (!(time_limit >= 0.0) || time_limit > 3600.0) {
+      response.status = Response::INVALID_REQUEST;
+      response.message = "time_limit must be in [0, 3600] s (0: the replan_time_limit parameter)";
+    } else {
+      body(response, time_limit > 0.0 ? time_limit : config_.replan_time_limit);
     }
+  } catch (const std::exception& e) {
+    response.status = Response::NO_PLAN;
+    response.message = std::string("internal error: ") + e.what();
+    ROS_ERROR("fleet_planner: %s: %s", name, response.message.c_str());
+  }
+  return response;
+}
+
+fleet_planner::AddTasks::Response ExecutionRunner::addTasks(const fleet_planner::AddTasks::Request& request) {
+  using Response = fleet_planner::AddTasks::Response;
+  return serve<Response>("add_tasks", request.time_limit, [&](Response& response, double time_limit) {
     auto invalid = [&](const std::string& why) {
       response.status = Response::INVALID_REQUEST;
       response.message = why;
-      return response;
     };
-    if (!(request.time_limit >= 0.0) || request.time_limit > 3600.0) {
-      return invalid("time_limit must be in [0, 3600] s (0: the replan_time_limit parameter)");
-    }
     if (request.tasks.empty()) return invalid("no task");
     const auto& ids = monitor_.robotIds();
     std::vector<std::pair<int, geometry_msgs::Pose2D>> goals;
@@ -107,36 +131,16 @@ fleet_planner::AddTasks::Response ExecutionRunner::addTasks(const fleet_planner:
       }
       goals.emplace_back(a, task.goal);
     }
-    const ReplanReport report = monitor_.assignGoals(
-        goals, request.time_limit > 0.0 ? request.time_limit : config_.replan_time_limit, config_.poseTolerance());
+    const ReplanReport report = monitor_.assignGoals(goals, time_limit, config_.poseTolerance());
     reported(report);
     response.status = report.merged ? Response::SUCCESS : report.invalid_goal ? Response::INVALID_REQUEST : Response::NO_PLAN;
-    response.message = report.message;
-    response.time = report.time_s;
-    for (int a : report.robots) response.planned.push_back(ids[a]);
-  } catch (const std::exception& e) {
-    response.status = Response::NO_PLAN;
-    response.message = std::string("internal error: ") + e.what();
-    ROS_ERROR("fleet_planner: add_tasks: %s", response.message.c_str());
-  }
-  return response;
+    answer(report, ids, response, response.planned);
+  });
 }
 
 fleet_planner::ReplanRobots::Response ExecutionRunner::replan(const fleet_planner::ReplanRobots::Request& request) {
   using Response = fleet_planner::ReplanRobots::Response;
-  Response response;
-  try {
-    std::lock_guard<std::mutex> lock(mutex_);
-    if (!monitor_.running()) {
-      response.status = Response::NOT_EXECUTING;
-      response.message = "no plan is being executed";
-      return response;
-    }
-    if (!(request.time_limit >= 0.0) || request.time_limit > 3600.0) {
-      response.status = Response::INVALID_REQUEST;
-      response.message = "time_limit must be in [0, 3600] s (0: the replan_time_limit parameter)";
-      return response;
-    }
+  return serve<Response>("replan", request.time_limit, [&](Response& response, double time_limit) {
     std::vector<int> robots;
     const auto& ids = monitor_.robotIds();
     for (const std::string& id : request.robot_ids) {
@@ -144,7 +148,7 @@ fleet_planner::ReplanRobots::Response ExecutionRunner::replan(const fleet_planne
       if (it == ids.end()) {
         response.status = Response::INVALID_REQUEST;
         response.message = "robot '" + id + "' is not in the running plan";
-        return response;
+        return;
       }
       robots.push_back(static_cast<int>(it - ids.begin()));
     }
@@ -152,20 +156,12 @@ fleet_planner::ReplanRobots::Response ExecutionRunner::replan(const fleet_planne
     if (robots.empty()) {
       response.status = Response::NOTHING_TO_DO;
       response.message = "no robot is BLOCKED";
-      return response;
+      return;
     }
-    const ReplanReport report =
-        replanLocked(robots, request.time_limit > 0.0 ? request.time_limit : config_.replan_time_limit);
+    const ReplanReport report = replanLocked(robots, time_limit);
     response.status = report.merged ? Response::SUCCESS : report.nothing_to_do ? Response::NOTHING_TO_DO : Response::NO_PLAN;
-    response.message = report.message;
-    response.time = report.time_s;
-    for (int a : report.robots) response.replanned.push_back(ids[a]);
-  } catch (const std::exception& e) {
-    response.status = Response::NO_PLAN;
-    response.message = std::string("internal error: ") + e.what();
-    ROS_ERROR("fleet_planner: replan: %s", response.message.c_str());
-  }
-  return response;
+    answer(report, ids, response, response.replanned);
+  });
 }
 
 std::optional<geometry_msgs::Pose2D> ExecutionRunner::poseOf(const std::string& robot_id) const {

@@ -11,6 +11,7 @@ import rostest
 from fleet_planner.ros_conversions import task_to_msg
 from fleet_planner.srv import PlanFleet, PlanFleetRequest, PlanFleetResponse
 from fleet_planner.tasks_config import load_tasks
+from plan_when_ready import plan_when_ready
 
 
 class DemoPlansTest(unittest.TestCase):
@@ -21,12 +22,7 @@ class DemoPlansTest(unittest.TestCase):
         plan = rospy.ServiceProxy("/fleet_planner/plan_fleet", PlanFleet)
         for backend in ("la_lacam", "la_cbs"):
             request = PlanFleetRequest(tasks=tasks, backend=backend, time_limit=30.0)
-            deadline = rospy.Time.now() + rospy.Duration(30)
-            response = plan(request)
-            while response.status in (PlanFleetResponse.NO_MAP, PlanFleetResponse.UNKNOWN_ROBOT) \
-                    and rospy.Time.now() < deadline:  # map or registry not received yet
-                rospy.sleep(0.2)
-                response = plan(request)
+            response = plan_when_ready(plan, request)
             self.assertEqual(response.status, PlanFleetResponse.SUCCESS,
                              backend + ": " + response.message)
             self.assertEqual(len(response.timelines), len(tasks))

@@ -20,6 +20,7 @@ from fleet_planner.msg import FleetExecution, RobotExecution
 from fleet_planner.ros_conversions import task_to_msg
 from fleet_planner.srv import PlanFleet, PlanFleetRequest, PlanFleetResponse
 from fleet_planner.tasks_config import load_tasks
+from plan_when_ready import plan_when_ready
 
 HELD = "tug_1"
 
@@ -49,12 +50,7 @@ class ExecutionTest(unittest.TestCase):
         rospy.wait_for_service("/fleet_planner/plan_fleet", timeout=60)
         plan = rospy.ServiceProxy("/fleet_planner/plan_fleet", PlanFleet)
         request = PlanFleetRequest(tasks=[task_to_msg(t) for t in tasks], time_limit=30.0)
-        deadline = rospy.Time.now() + rospy.Duration(30)
-        response = plan(request)
-        while response.status in (PlanFleetResponse.NO_MAP, PlanFleetResponse.UNKNOWN_ROBOT) \
-                and rospy.Time.now() < deadline:  # map or registry not received yet
-            rospy.sleep(0.2)
-            response = plan(request)
+        response = plan_when_ready(plan, request)
         self.assertEqual(response.status, PlanFleetResponse.SUCCESS, response.message)
 
         deadline = rospy.Time.now() + rospy.Duration(180)

@@ -24,6 +24,7 @@ from fleet_planner.msg import RobotTask
 from fleet_planner.srv import AddTasks, AddTasksRequest, AddTasksResponse, PlanFleet, PlanFleetRequest, \
     PlanFleetResponse, ReplanRobots, ReplanRobotsRequest, ReplanRobotsResponse
 from fleet_planner.tasks_config import load_tasks
+from plan_when_ready import plan_when_ready
 
 HELD = "tug_1"
 BACK = ["amr_3", "tug_1"]  # sent back to their starts once everybody has arrived
@@ -64,12 +65,7 @@ class ExecutionReplanTest(unittest.TestCase):
         self.assertEqual(add_tasks(AddTasksRequest(tasks=home)).status, AddTasksResponse.NOT_EXECUTING)
         plan = rospy.ServiceProxy("/fleet_planner/plan_fleet", PlanFleet)
         request = PlanFleetRequest(tasks=[task_to_msg(t) for t in tasks], time_limit=30.0)
-        deadline = rospy.Time.now() + rospy.Duration(30)
-        response = plan(request)
-        while response.status in (PlanFleetResponse.NO_MAP, PlanFleetResponse.UNKNOWN_ROBOT) \
-                and rospy.Time.now() < deadline:  # map or registry not received yet
-            rospy.sleep(0.2)
-            response = plan(request)
+        response = plan_when_ready(plan, request)
         self.assertEqual(response.status, PlanFleetResponse.SUCCESS, response.message)
         bad = replan(ReplanRobotsRequest(robot_ids=["no_such_robot"]))
         self.assertEqual(bad.status, ReplanRobotsResponse.INVALID_REQUEST)

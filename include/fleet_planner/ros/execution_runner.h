@@ -52,6 +52,10 @@ class ExecutionRunner {
   ReplanReport replanLocked(const std::vector<int>& robots, double time_limit);
   /// Logs a re-plan, hands a merge to on_revised_ and gives freed memory back (lock held).
   void reported(const ReplanReport& report);
+  /// A service call under the lock: NOT_EXECUTING, INVALID_REQUEST for a bad time_limit, NO_PLAN
+  /// for an exception; else body(response, time limit in seconds).
+  template <class Response, class Body>
+  Response serve(const char* name, double time_limit, Body&& body);
   std::optional<geometry_msgs::Pose2D> poseOf(const std::string& robot_id) const;
 
   const PlannerConfig config_;
