@@ -325,57 +325,60 @@ def live_goals(soak, args, plan, tf, totals, latencies):
     totals["goals_total"] = args.rounds * len(soak.robots)
     rss_first, progress_at, printed, planned = None, time.monotonic(), 0, 0
     retry_at = {}
-    while min(reached.values()) < args.rounds and not rospy.is_shutdown():
-        time.sleep(0.2)
-        with soak.lock:
-            last = soak.last
-        if last is None:
-            continue
-        now = time.monotonic()
-        for r in last.robots:
-            if r.state != RobotExecution.ARRIVED or reached[r.robot_id] >= args.rounds or r.robot_id not in goals:
+    try:
+        while min(reached.values()) < args.rounds and not rospy.is_shutdown():
+            time.sleep(0.2)
+            with soak.lock:
+                last = soak.last
+            if last is None:
                 continue
-            if now < retry_at.get(r.robot_id, 0.0):
-                continue
-            pose = tf.lookup_transform("map", r.robot_id + "/base_link", rospy.Time(0), rospy.Duration(5))
-            x, y = pose.transform.translation.x, pose.transform.translation.y
-            goal = goals[r.robot_id]
-            if math.hypot(x - goal[0], y - goal[1]) < 0.2 and r.robot_id not in retry_at:
-                reached[r.robot_id] += 1
-                totals["goals_reached"] += 1
-                progress_at = now
-                if min(reached.values()) >= 1 and rss_first is None:
-                    rss_first = rss_mb("/fleet_planner")
-            retry_at.pop(r.robot_id, None)
-            if reached[r.robot_id] >= args.rounds:
-                continue
-            new_goal = soak.draw_goal(r.robot_id, (x, y), goals)
-            if new_goal is None:
-                retry_at[r.robot_id] = now + 2.0
-                continue
-            t0 = time.monotonic()
-            answer = add(AddTasksRequest(tasks=[RobotTask(robot_id=r.robot_id, goal=Pose2D(*new_goal))]))
-            latencies.append(time.monotonic() - t0)
-            totals["replans"] += 1
-            if answer.status == AddTasksResponse.SUCCESS:
-                goals[r.robot_id] = new_goal
-                planned += 1
-            else:
-                totals["plan_failures"] += 1
-                retry_at[r.robot_id] = now + 2.0  # another goal in a while
-        if now - progress_at > args.round_timeout:
-            totals["deadlocks"] += 1
-            print("fleet_soak: no goal reached for %.0f s: stopping" % args.round_timeout, flush=True)
-            break
-        done_rounds = min(reached.values())
-        if done_rounds > printed:
-            printed = done_rounds
-            rss = rss_mb("/fleet_planner")
-            print("every robot reached %d/%d goals: %d goals, %d collisions, %d new-goal plans (%d failed), %d re-plans "
-                  "(%d refused), planner RSS %s MB" % (
-                      done_rounds, args.rounds, totals["goals_reached"], last.collisions, totals["replans"],
-                      totals["plan_failures"], last.replans, last.replans_refused, "%.1f" % rss if rss else "?"),
-                  flush=True)
+            now = time.monotonic()
+            for r in last.robots:
+                if r.state != RobotExecution.ARRIVED or reached[r.robot_id] >= args.rounds or r.robot_id not in goals:
+                    continue
+                if now < retry_at.get(r.robot_id, 0.0):
+                    continue
+                pose = tf.lookup_transform("map", r.robot_id + "/base_link", rospy.Time(0), rospy.Duration(5))
+                x, y = pose.transform.translation.x, pose.transform.translation.y
+                goal = goals[r.robot_id]
+                if math.hypot(x - goal[0], y - goal[1]) < 0.2 and r.robot_id not in retry_at:
+                    reached[r.robot_id] += 1
+                    totals["goals_reached"] += 1
+                    progress_at = now
+                    if min(reached.values()) >= 1 and rss_first is None:
+                        rss_first = rss_mb("/fleet_planner")
+                retry_at.pop(r.robot_id, None)
+                if reached[r.robot_id] >= args.rounds:
+                    continue
+                new_goal = soak.draw_goal(r.robot_id, (x, y), goals)
+                if new_goal is None:
+                    retry_at[r.robot_id] = now + 2.0
+                    continue
+                t0 = time.monotonic()
+                answer = add(AddTasksRequest(tasks=[RobotTask(robot_id=r.robot_id, goal=Pose2D(*new_goal))]))
+                latencies.append(time.monotonic() - t0)
+                totals["replans"] += 1
+                if answer.status == AddTasksResponse.SUCCESS:
+                    goals[r.robot_id] = new_goal
+                    planned += 1
+                else:
+                    totals["plan_failures"] += 1
+                    retry_at[r.robot_id] = now + 2.0  # another goal in a while
+            if now - progress_at > args.round_timeout:
+                totals["deadlocks"] += 1
+                print("fleet_soak: no goal reached for %.0f s: stopping" % args.round_timeout, flush=True)
+                break
+            done_rounds = min(reached.values())
+            if done_rounds > printed:
+                printed = done_rounds
+                rss = rss_mb("/fleet_planner")
+                print("every robot reached %d/%d goals: %d goals, %d collisions, %d new-goal plans (%d failed), %d re-plans "
+                      "(%d refused), planner RSS %s MB" % (
+                          done_rounds, args.rounds, totals["goals_reached"], last.collisions, totals["replans"],
+                          totals["plan_failures"], last.replans, last.replans_refused, "%.1f" % rss if rss else "?"),
+                      flush=True)
+    except KeyboardInterrupt:  # stopped early: the summary so far
+        print("fleet_soak: interrupted with every robot at %d goals or more" % min(reached.values()), flush=True)
     with soak.lock:
         last = soak.last
     totals["collisions"] = last.collisions if last else 0

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdio>
 #include <memory>
 #include <numeric>
 
@@ -281,8 +282,18 @@ class Replanner {
 
 ReplanResult replanRobots(const ReplanRequest& request) {
   const auto started = std::chrono::steady_clock::now();
+  std::string stages;  // "connect 0.01 s, search 0.20 s, ...": where the time went
+  auto lap = [&, last = started](const char* stage) mutable {
+    const auto now = std::chrono::steady_clock::now();
+    char text[64];
+    std::snprintf(text, sizeof(text), "%s%s %.3f s", stages.empty() ? "" : ", ", stage,
+                  std::chrono::duration<double>(now - last).count());
+    stages += text;
+    last = now;
+  };
   auto finish = [&](ReplanResult r) {
     r.time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    r.stages = stages;
     return r;
   };
   if (std::string why = requestProblem(request); !why.empty()) return finish(failure(SolveStatus::InvalidInput, why));
@@ -303,22 +314,31 @@ ReplanResult replanRobots(const ReplanRequest& request) {
   }
   try {
     Replanner replanner(request, robots);
-    if (std::string why = replanner.connect(); !why.empty()) {
+    const std::string connect_problem = replanner.connect();
+    lap("connect");
+    if (const std::string& why = connect_problem; !why.empty()) {
       return finish(failure(replanner.badPose() ? SolveStatus::InvalidInput : SolveStatus::Infeasible, why));
     }
     SolveResult solved = replanner.solveLattice();
+    lap("search");
     if (!solved.success()) return finish(failure(solved.status, solved.reason));
     std::string problem;
-    if (!replanner.assemble(solved.paths, problem)) return finish(failure(SolveStatus::Infeasible, problem));
+    const bool assembled = replanner.assemble(solved.paths, problem);
+    lap("assemble");
+    if (!assembled) return finish(failure(SolveStatus::Infeasible, problem));
     const ValidationResult check =
         validatePlan(*request.map, replanner.instance(), replanner.plan(), replanner.model());
+    lap("validate");
     if (!check.valid()) {
       return finish(failure(SolveStatus::InternalError,
                             "internal error: the re-planned plan fails validation: " + check.violation.message + " (new paths from step " + std::to_string(replanner.startTime()) + ")"));
     }
     ReplanResult out;
     out.dependencies = buildStepDependencies(replanner.instance(), replanner.plan(), replanner.model());
-    if (std::string why = replanner.releasesKept(out.dependencies); !why.empty()) {
+    lap("dependencies");
+    const std::string kept = replanner.releasesKept(out.dependencies);
+    lap("releases");
+    if (const std::string& why = kept; !why.empty()) {
       return finish(failure(SolveStatus::Infeasible, why));
     }
     out.status = SolveStatus::Success;

@@ -165,8 +165,8 @@ ReplanReport ExecutionMonitor::replanWith(ReplanRequest rq, const std::string& n
   ++message_.replans;
   report.merged = true;
   report.robots = changed;
-  report.message = names + ": planned in " + std::to_string(result.time_s) + " s (revision " +
-                   std::to_string(message_.revision) + ")";
+  report.message = names + ": planned in " + std::to_string(result.time_s) + " s (" + result.stages +
+                   "; revision " + std::to_string(message_.revision) + ")";
   message_.last_replan = report.message;
   return report;
 }

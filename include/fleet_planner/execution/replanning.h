@@ -87,6 +87,7 @@ struct ReplanResult {
   Instance instance;
   StepDependencies dependencies;  ///< of `plan`
   double time_s = 0.0;
+  std::string stages;  ///< where the time went: "connect 0.004 s, search 0.120 s, ..."
   bool success() const { return status == SolveStatus::Success; }
 };
 
