@@ -327,7 +327,7 @@ ReplanResult replanRobots(const ReplanRequest& request) {
     lap("assemble");
     if (!assembled) return finish(failure(SolveStatus::Infeasible, problem));
     const ValidationResult check =
-        validatePlan(*request.map, replanner.instance(), replanner.plan(), replanner.model());
+        validatePlanChanges(*request.map, replanner.instance(), replanner.plan(), replanner.model(), robots);
     lap("validate");
     if (!check.valid()) {
       return finish(failure(SolveStatus::InternalError,

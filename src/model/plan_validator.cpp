@@ -59,8 +59,11 @@ std::vector<std::pair<int, int>> overlappingBoxes(const std::vector<Box>& boxes)
 
 class Checker {
  public:
-  Checker(const GridMap& map, const Instance& instance, const Plan& plan, const ActionModel& model)
-      : map_(map), instance_(instance), plan_(plan), model_(model) {}
+  Checker(const GridMap& map, const Instance& instance, const Plan& plan, const ActionModel& model,
+          std::vector<bool> checked = {})
+      : map_(map), instance_(instance), plan_(plan), model_(model), checked_(std::move(checked)) {
+    if (checked_.empty()) checked_.assign(instance.robots.size(), true);
+  }
 
   Violation run() {
     const int n = static_cast<int>(instance_.robots.size());
@@ -98,6 +101,7 @@ class Checker {
     for (const Path& p : plan_.paths) horizon = std::max(horizon, static_cast<int>(p.size()) - 1);
 
     for (int i = 0; i < n; ++i) {
+      if (!checked_[i]) continue;
       if (!cellsFree(map_, motions_[i]->bodyAt(0), plan_.paths[i][0]))
         return fail(Violation::Kind::StateInObstacle, i, -1, 0,
                     "footprint at " + toString(plan_.paths[i][0]) + " covers a blocked or off-map cell");
@@ -107,10 +111,11 @@ class Checker {
     std::vector<const CellSet*> sweeps(n);
     for (int t = 0; t < horizon; ++t) {
       for (int i = 0; i < n; ++i) {
+        sweeps[i] = motions_[i]->sweepAt(t, model_);
+        if (!checked_[i]) continue;
         const GridPose& from = stateAt(plan_.paths[i], t);
         const GridPose& to = stateAt(plan_.paths[i], t + 1);
         const auto action = motions_[i]->actionAt(t, model_);
-        sweeps[i] = motions_[i]->sweepAt(t, model_);
         if (!action || sweeps[i] == nullptr)
           return fail(Violation::Kind::IllegalAction, i, -1, t,
                       "no action leads from " + toString(from) + " to " + toString(to));
@@ -126,7 +131,7 @@ class Checker {
       std::vector<Box> boxes(n);
       for (int i = 0; i < n; ++i) {
         const GridPose& a = stateAt(plan_.paths[i], t);
-        boxes[i] = boxOf(*sweeps[i], a);
+        boxes[i] = sweeps[i] ? boxOf(*sweeps[i], a) : Box{1, 1, 0, 0};  // an unchecked robot's illegal step: no box
       }
       for (const auto& [i, j] : overlappingBoxes(boxes)) {
         if (!checked(i, j, t)) continue;
@@ -143,6 +148,7 @@ class Checker {
 
  private:
   bool checked(int i, int j, int t) const {
+    if (!checked_[i] && !checked_[j]) return false;
     return t >= std::max(instance_.robots[i].conflicts_from, instance_.robots[j].conflicts_from);
   }
 
@@ -184,6 +190,7 @@ class Checker {
   const Instance& instance_;
   const Plan& plan_;
   const ActionModel& model_;
+  std::vector<bool> checked_;  ///< robots whose paths and conflicts are checked
   std::vector<std::unique_ptr<FootprintCells>> cells_;
   std::vector<std::unique_ptr<RobotCells>> motions_;
 };
@@ -193,6 +200,15 @@ class Checker {
 ValidationResult validatePlan(const GridMap& map, const Instance& instance, const Plan& plan,
                               const ActionModel& model) {
   return {Checker(map, instance, plan, model).run()};
+}
+
+ValidationResult validatePlanChanges(const GridMap& map, const Instance& instance, const Plan& plan,
+                                     const ActionModel& model, const std::vector<int>& changed) {
+  std::vector<bool> checked(instance.robots.size(), false);
+  for (int r : changed) {
+    if (r >= 0 && r < static_cast<int>(checked.size())) checked[r] = true;
+  }
+  return {Checker(map, instance, plan, model, std::move(checked)).run()};
 }
 
 const char* violationName(Violation::Kind kind) {

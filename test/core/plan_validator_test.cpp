@@ -42,6 +42,24 @@ TEST(PlanValidator, AcceptsAValidPlan) {
   EXPECT_EQ(v.kind, Kind::None) << v.message;
 }
 
+TEST(PlanValidator, ChangesAreCheckedAgainstEveryoneAndOnlyThey) {
+  // a and b meet head-on (a conflict between them); c drives alone on the row below.
+  const GridMap map = freeMap(5, 2);
+  Instance instance;
+  instance.robots = {dot("a", {0, 0, 0}, {3, 0, 0}), dot("b", {4, 0, 1}, {1, 0, 1}), dot("c", {0, 1, 0}, {4, 1, 0})};
+  Plan plan;
+  plan.paths = {{{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {3, 0, 0}},
+                {{4, 0, 1}, {3, 0, 1}, {2, 0, 1}, {1, 0, 1}},
+                {{0, 1, 0}, {1, 1, 0}, {2, 1, 0}, {3, 1, 0}, {4, 1, 0}}};
+  EXPECT_FALSE(validatePlan(map, instance, plan).valid());
+  EXPECT_TRUE(validatePlanChanges(map, instance, plan, {}, {2}).valid());  // c meets nobody
+  EXPECT_EQ(validatePlanChanges(map, instance, plan, {}, {1}).violation.kind, Kind::VertexConflict);
+  // c's new path ends where a arrives at t = 3: found although a is unchanged.
+  plan.paths[2] = {{0, 1, 0}, {1, 1, 0}, {2, 1, 0}, {3, 1, 0}, {3, 1, 3}, {3, 0, 3}};
+  instance.robots[2].target = {3, 0, 3};
+  EXPECT_FALSE(validatePlanChanges(map, instance, plan, {}, {2}).valid());
+}
+
 TEST(PlanValidator, AcceptsSinglePoseAndStaggeredPaths) {
   const GridMap map = freeMap(4, 4);
   const auto v = check(map, {dot("a", {0, 0, 0}, {0, 0, 0}), dot("b", {3, 3, 1}, {1, 3, 1})},

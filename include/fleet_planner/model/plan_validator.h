@@ -48,6 +48,13 @@ struct ValidationResult {
 ValidationResult validatePlan(const GridMap& map, const Instance& instance, const Plan& plan,
                               const ActionModel& model = {});
 
+/// Same, for a plan in which only the robots `changed` differ from one already valid (same map,
+/// model, and the other robots' paths and Robots): only their paths, and only the conflicts that
+/// involve one of them, are checked. A revision during the execution (execution/replanning.h)
+/// is checked this way: every other pair is as it was.
+ValidationResult validatePlanChanges(const GridMap& map, const Instance& instance, const Plan& plan,
+                                     const ActionModel& model, const std::vector<int>& changed);
+
 /// "vertex conflict", "transfer conflict", ... (lower case, for messages).
 const char* violationName(Violation::Kind kind);
 
