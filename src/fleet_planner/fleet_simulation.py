@@ -7,7 +7,8 @@ the execution lets a robot skip waits once it is released. A robot may stop: at 
 step (probability stop_probability, for stop_seconds), or held on purpose (hold()). Seeded: the
 same seed and calls give the same motion. With uncoordinated=True every state is released and a
 wait takes its step's time: the plan driven on its own timing, late, as robots that nobody
-coordinates would (a negative control for the execution).
+coordinates would (a negative control for the execution). A robot may drift (drift()): its pose
+leaves its path sideways and comes back, as a robot whose localisation or controller errs.
 """
 import math
 import random
@@ -31,6 +32,17 @@ class SimulatedRobot:
         self.step_seconds = 0.0  # the current step's duration (0: not begun)
         self.stopped_for = 0.0  # seconds left standing still
         self.released = 0
+        self.drift = None       # (seconds into it, length in seconds, largest offset in metres)
+
+    def offset_pose(self):
+        """The pose as seen from outside: shifted to the robot's left while it drifts (up to the
+        largest offset halfway through, then back)."""
+        if self.drift is None:
+            return self.pose
+        t, length, peak = self.drift
+        d = peak * (1.0 - abs(2.0 * t / length - 1.0))
+        x, y, yaw = self.pose
+        return (x - d * math.sin(yaw), y + d * math.cos(yaw), yaw)
 
     def follow(self, states):
         """Starts a new plan: its first state is where the robot stands (the planner started it there)."""
@@ -99,6 +111,11 @@ class FleetSimulation:
         robot = self.robots[robot_id]
         robot.stopped_for = max(robot.stopped_for, seconds)
 
+    def start_drift(self, robot_id, seconds, offset):
+        """The robot drifts off its path sideways, up to `offset` metres halfway through
+        `seconds`, and back (a fault)."""
+        self.robots[robot_id].drift = (0.0, float(seconds), float(offset))
+
     def schedule_stops(self, count, within, seconds):
         """`count` stops of `seconds`, each of a random robot at a random time in the next
         `within` seconds (a person in the way, a door to open)."""
@@ -114,7 +131,11 @@ class FleetSimulation:
             self.hold(robot_id, seconds)
             self.stops += 1
         for robot_id in sorted(self.robots):
-            self._advance(self.robots[robot_id], dt)
+            robot = self.robots[robot_id]
+            self._advance(robot, dt)
+            if robot.drift is not None:
+                t, length, peak = robot.drift
+                robot.drift = (t + dt, length, peak) if t + dt < length else None
 
     def _advance(self, robot, dt):
         while dt > 0 and not robot.arrived():

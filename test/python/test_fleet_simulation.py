@@ -15,6 +15,20 @@ def run(sim, seconds, dt=0.05):
         sim.advance(dt)
 
 
+class Drifts(unittest.TestCase):
+    def test_a_drifting_robot_leaves_its_path_sideways_and_comes_back(self):
+        sim = FleetSimulation(1.0)
+        sim.follow({"a": LINE})
+        sim.start_drift("a", 4.0, 0.5)
+        run(sim, 2.0)  # halfway: the largest offset, to the robot's left (+y at yaw 0)
+        x, y, _ = sim.robots["a"].offset_pose()
+        self.assertAlmostEqual(x, 0.0, places=6)
+        self.assertAlmostEqual(y, 0.5, places=2)
+        self.assertEqual(sim.robots["a"].pose, LINE[0])  # the robot's own place on its path
+        run(sim, 2.1)
+        self.assertEqual(sim.robots["a"].offset_pose(), LINE[0])
+
+
 class FollowsRevisions(unittest.TestCase):
     def test_a_revised_robot_keeps_its_place_and_drives_its_new_states(self):
         sim = FleetSimulation(1.0)
