@@ -187,12 +187,15 @@ void ExecutionRunner::onTimer(const ros::TimerEvent&) {
     fleet_planner::FleetExecution execution = monitor_.update(poses, now);
     for (const std::string& contact : monitor_.newContacts()) ROS_WARN("fleet_planner: execution: contact: %s", contact.c_str());
     if (config_.replan_blocked) {
-      // Each robot BLOCKED for longer than blocked_timeout, at most once per blocked_timeout.
+      // Each robot BLOCKED for longer than blocked_timeout, at most once per blocked_timeout, and
+      // one re-plan per update: the lock (and the service calls waiting for it) is held for at
+      // most one replan_time_limit, and the other BLOCKED robots get their turns next.
       for (int a : monitor_.blockedRobots()) {
         ros::Time& last = last_attempt_[monitor_.robotIds()[a]];
         if (!last.isZero() && (now - last).toSec() < config_.blocked_timeout) continue;
         last = now;
         if (replanLocked({a}, config_.replan_time_limit).merged) execution = monitor_.update(poses, ros::Time::now());
+        break;
       }
     }
     execution_pub_.publish(execution);
