@@ -106,6 +106,11 @@ class Simulation {
     owned_ = std::move(*next);
     cells_ = owned_.cells.get();
     plan_ = *owned_.plan;
+    for (std::size_t i = 0; i < owned_.progress.size(); ++i) {
+      if (owned_.progress[i] == progress_[i]) continue;
+      progress_[i] = owned_.progress[i];  // a robot moved off its path: at rest where it stands
+      moving_[i] = false;
+    }
     tracker_.emplace(plan_, owned_.dependencies, progress_);
     for (int i = 0; i < cells_->robots(); ++i) {
       if (collides(i)) return false;

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <map>
 #include <memory>
 #include <numeric>
 
@@ -42,6 +43,9 @@ std::string requestProblem(const ReplanRequest& rq) {
   for (const NewTarget& t : rq.targets) {
     if (t.robot < 0 || t.robot >= static_cast<int>(n)) return "re-plan: no robot " + std::to_string(t.robot) + " for a new target";
   }
+  for (const MovedRobot& m : rq.moved) {
+    if (m.robot < 0 || m.robot >= static_cast<int>(n)) return "re-plan: no robot " + std::to_string(m.robot) + " moved";
+  }
   for (const AvoidedSteps& a : rq.avoid) {
     if (a.robot < 0 || a.robot >= static_cast<int>(n)) return "re-plan: no robot " + std::to_string(a.robot) + " to avoid";
   }
@@ -65,21 +69,28 @@ class Replanner {
       instance_.robots[t.robot].target = t.target;
       instance_.robots[t.robot].target_yaw = t.target_yaw;
     }
+    for (const MovedRobot& m : rq.moved) moved_[m.robot] = &m;
     bool all_arrived = true;
     for (int a : robots_) {
+      if (moved_.count(a)) continue;
       start_time_ = std::max(start_time_, rq.released[a]);
       all_arrived = all_arrived && rq.released[a] == lastState(a);
     }
-    // Robots that have arrived start their new ways no earlier than the slowest other robot's
-    // progress: before it, the others' paths are what they have already driven.
-    if (all_arrived) {
-      int slowest = -1;
-      for (int j = 0; j < static_cast<int>(plan_.paths.size()); ++j) {
-        if (!std::count(robots_.begin(), robots_.end(), j)) slowest = slowest < 0 ? rq.progress[j] : std::min(slowest, rq.progress[j]);
-      }
-      start_time_ = std::max(start_time_, slowest);
+    // Robots that have arrived, and robots moved off their paths, start their new ways no
+    // earlier than the slowest other robot's progress: before it, the others' paths are what
+    // they have already driven.
+    slowest_ = -1;
+    for (int j = 0; j < static_cast<int>(plan_.paths.size()); ++j) {
+      if (!std::count(robots_.begin(), robots_.end(), j)) slowest_ = slowest_ < 0 ? rq.progress[j] : std::min(slowest_, rq.progress[j]);
     }
+    if (all_arrived || !moved_.empty()) start_time_ = std::max(start_time_, slowest_);
+    if (slowest_ < 0) slowest_ = start_time_;  // nobody else: no history to check
+    progress_ = rq.progress;
+    for (const auto& [a, m] : moved_) progress_[a] = std::min(progress_[a], start_time_);
   }
+
+  /// The robot stands off its plan (ReplanRequest::moved).
+  bool moved(int robot) const { return moved_.count(robot) > 0; }
 
   /// The robots' connections from their released states to their targets. A robot that rests at
   /// a yaw off the grid (its start yaw, not yet turned from, or its previous target's) turns from
@@ -92,7 +103,11 @@ class Replanner {
       const int k = rq_.released[a];
       r.start = rq_.plan->paths[a][k];
       r.start_turn = 0;
-      if (k == lastState(a) && old.target_yaw) {
+      if (const auto m = moved_.find(a); m != moved_.end()) {
+        r.start = m->second->pose;
+        r.start_yaw = m->second->yaw;
+        r.conflicts_from = slowest_;  // its history becomes a rest where it stands (see replanning.h)
+      } else if (k == lastState(a) && old.target_yaw) {
         r.start_yaw = old.target_yaw;
         r.conflicts_from = k;  // its history becomes a rest there: it only meets steps done before it arrived
       } else if (!old.start_yaw || k > old.start_turn) {
@@ -106,6 +121,12 @@ class Replanner {
     if (lattice_.problem.empty()) {
       for (std::size_t i = 0; i < robots_.size(); ++i) {
         Robot& r = instance_.robots[robots_[i]];
+        if (moved(robots_[i])) {
+          r.start = sub.robots[i].start;
+          r.start_yaw.reset();
+          r.start_turn = 0;
+          r.conflicts_from = sub.robots[i].conflicts_from;
+        }
         if (!sub.robots[i].start_yaw) continue;
         r.start = lattice_.connections[i].prefix.front();
         r.start_yaw = sub.robots[i].start_yaw;
@@ -195,7 +216,7 @@ class Replanner {
       const Path& prefix = lattice_.connections[i].prefix;
       // A robot resting at a yaw rests there from the start on (the same place, so its history
       // keeps its cells), and turns when its new way begins.
-      Path p = instance_.robots[a].start_yaw && instance_.robots[a].start_turn == start_time_
+      Path p = moved(a) || (instance_.robots[a].start_yaw && instance_.robots[a].start_turn == start_time_)
                    ? Path(1, prefix.front())
                    : Path(old.begin(), old.begin() + rq_.released[a] + 1);
       p.resize(static_cast<std::size_t>(start_time_) + 1, p.back());
@@ -245,7 +266,7 @@ class Replanner {
 
   /// "" when no other robot is released less far under `dependencies` than it already is.
   std::string releasesKept(const StepDependencies& dependencies) const {
-    const ExecutionTracker tracker(plan_, dependencies, rq_.progress);
+    const ExecutionTracker tracker(plan_, dependencies, progress_);
     for (int j = 0; j < tracker.robots(); ++j) {
       if (std::count(robots_.begin(), robots_.end(), j)) continue;
       if (tracker.releasedUpTo(j) < rq_.released[j]) {
@@ -261,6 +282,8 @@ class Replanner {
 
   const Plan& plan() const { return plan_; }
   const Instance& instance() const { return instance_; }
+  const std::vector<int>& progress() const { return progress_; }
+  bool anyMoved() const { return !moved_.empty(); }
   int startTime() const { return start_time_; }
   const ActionModel& model() const { return model_; }
 
@@ -271,6 +294,9 @@ class Replanner {
   Plan plan_;
   Instance instance_;                ///< with the new targets and the rests at yaws
   int start_time_ = 0;
+  int slowest_ = 0;  ///< the slowest other robot's progress
+  std::map<int, const MovedRobot*> moved_;
+  std::vector<int> progress_;  ///< what each robot resumes from
   int lattice_time_ = 0;
   bool bad_pose_ = false;
   std::unique_ptr<FleetGraphs> sub_graphs_;
@@ -302,6 +328,7 @@ ReplanResult replanRobots(const ReplanRequest& request) {
     if (request.released[a] < static_cast<int>(request.plan->paths[a].size()) - 1) robots.push_back(a);
   }
   for (const NewTarget& t : request.targets) robots.push_back(t.robot);
+  for (const MovedRobot& m : request.moved) robots.push_back(m.robot);
   std::sort(robots.begin(), robots.end());
   robots.erase(std::unique(robots.begin(), robots.end()), robots.end());
   if (robots.empty()) {
@@ -310,6 +337,7 @@ ReplanResult replanRobots(const ReplanRequest& request) {
     same.plan = *request.plan;
     same.instance = *request.instance;
     same.dependencies = buildStepDependencies(*request.instance, same.plan, request.graphs->graph(0).actionModel());
+    same.progress = request.progress;
     return finish(std::move(same));
   }
   try {
@@ -329,6 +357,10 @@ ReplanResult replanRobots(const ReplanRequest& request) {
     const ValidationResult check =
         validatePlanChanges(*request.map, replanner.instance(), replanner.plan(), replanner.model(), robots);
     lap("validate");
+    if (!check.valid() && replanner.anyMoved()) {
+      // A moved robot's rest where it stands is no searched step: some robot must pass there first.
+      return finish(failure(SolveStatus::Infeasible, "a robot stands where another has still to pass: " + check.violation.message));
+    }
     if (!check.valid()) {
       return finish(failure(SolveStatus::InternalError,
                             "internal error: the re-planned plan fails validation: " + check.violation.message + " (new paths from step " + std::to_string(replanner.startTime()) + ")"));
@@ -344,6 +376,7 @@ ReplanResult replanRobots(const ReplanRequest& request) {
     out.status = SolveStatus::Success;
     out.plan = replanner.plan();
     out.instance = replanner.instance();
+    out.progress = replanner.progress();
     return finish(std::move(out));
   } catch (const InvalidInput& e) {
     return finish(failure(SolveStatus::InvalidInput, e.what()));

@@ -13,6 +13,7 @@
 #include "fleet_planner/execution/step_dependencies.h"
 #include "fleet_planner/io/instance_generator.h"
 #include "fleet_planner/model/collision.h"
+#include "fleet_planner/model/fleet_graphs.h"
 #include "fleet_planner/model/plan_validator.h"
 #include "fleet_planner/planning/plan_fleet.h"
 #include "fleet_planner/runtime/errors.h"
@@ -163,6 +164,13 @@ inline StepDependencies referenceDependencies(const PlanCells& cells) {
     }
   }
   return deps;
+}
+
+/// The state graphs of a planned world's robots.
+inline FleetGraphs graphsOf(const PlannedWorld& w) {
+  std::vector<Footprint> footprints;
+  for (const Robot& r : w.instance.robots) footprints.push_back(r.footprint);
+  return FleetGraphs(w.map, footprints, w.model);
 }
 
 }  // namespace fleet_planner::test

@@ -20,12 +20,6 @@ namespace {
 
 constexpr double kForever = 1e6;  // the stopped robot's hold ends long after everybody else's plan
 
-FleetGraphs graphsOf(const PlannedWorld& w) {
-  std::vector<Footprint> footprints;
-  for (const Robot& r : w.instance.robots) footprints.push_back(r.footprint);
-  return FleetGraphs(w.map, footprints, w.model);
-}
-
 /// The map cells of a placed set.
 std::set<std::pair<int, int>> mapCells(const PlacedCells& p) {
   std::set<std::pair<int, int>> out;

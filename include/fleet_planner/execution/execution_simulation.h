@@ -47,12 +47,15 @@ struct Hold {
 };
 
 /// A new plan handed over during the execution (replanning.h): the robots keep their progress
-/// and the steps they are doing, which the new plan must keep.
+/// and the steps they are doing, which the new plan must keep, unless `progress` says otherwise.
 struct SimulatedReplan {
   std::shared_ptr<const Instance> instance;
   std::shared_ptr<const Plan> plan;
   std::shared_ptr<const PlanCells> cells;  ///< of *plan for *instance
   StepDependencies dependencies;
+  /// Where the robots stand in the new plan (ReplanResult::progress; empty: where they stood). A
+  /// robot given another state stops there: a robot moved off its path, at its new rest.
+  std::vector<int> progress;
 };
 
 /// The execution as a re-plan sees it, after each event.

@@ -31,6 +31,15 @@
 /// (Robot::conflicts_from) and its requirements on them are met. Robots that have all arrived begin
 /// their new ways no earlier than the slowest other robot's progress.
 ///
+/// Robots moved off their paths (a push, a drift, a controller that erred). A robot may stand at
+/// a pose no state of its plan has (`moved`): it is planned again from that pose. Its path
+/// becomes a rest there from step 0 (a history it did not drive) until its new way begins, no
+/// earlier than every other robot's progress, and its rewritten history is checked from the
+/// slowest other robot's progress on (Robot::conflicts_from): steps everybody else has done are
+/// the past, steps somebody has not done must not meet the robot where it stands. It resumes at
+/// its rest (ReplanResult::progress). A re-plan in which some robot has still to pass where it
+/// stands, before it can leave, is refused.
+///
 /// Connections. A re-planned robot's progress state may lie off its lattice (a start's or a
 /// target's connecting motion): it is connected again, as planFleet does (lattice.h), and its
 /// target's connection runs at the earliest step at which it meets nobody.
@@ -62,6 +71,14 @@ struct NewTarget {
   std::optional<double> target_yaw;
 };
 
+/// A robot that stands off its plan: at `pose` (its cell and nearest grid heading) and, when that
+/// heading is not its yaw, at `yaw`.
+struct MovedRobot {
+  int robot = -1;
+  GridPose pose;
+  std::optional<double> yaw;
+};
+
 struct ReplanRequest {
   const GridMap* map = nullptr;
   const Instance* instance = nullptr;   ///< the executing plan's robots (targets as planned)
@@ -72,6 +89,7 @@ struct ReplanRequest {
   std::vector<int> robots;              ///< to plan again (instance indices), from their releases
   std::vector<AvoidedSteps> avoid;
   std::vector<NewTarget> targets;  ///< robots given new targets (planned again too)
+  std::vector<MovedRobot> moved;   ///< robots off their paths (planned again too, from there)
   std::string backend = "la_lns";  ///< a backend that avoids moving obstacles
   Deadline deadline;
   std::uint64_t seed = 0;
@@ -86,6 +104,8 @@ struct ReplanResult {
   Plan plan;
   Instance instance;
   StepDependencies dependencies;  ///< of `plan`
+  /// Per robot, the state of `plan` it resumes from: its progress, or a moved robot's rest.
+  std::vector<int> progress;
   double time_s = 0.0;
   std::string stages;  ///< where the time went: "connect 0.004 s, search 0.120 s, ..."
   bool success() const { return status == SolveStatus::Success; }
