@@ -9,6 +9,7 @@
 #include <numeric>
 
 #include "fleet_planner/execution/execution_tracker.h"
+#include "fleet_planner/model/instance_check.h"
 #include "fleet_planner/model/plan_validator.h"
 #include "fleet_planner/model/robot_cells.h"
 #include "fleet_planner/planning/lattice.h"
@@ -45,6 +46,9 @@ std::string requestProblem(const ReplanRequest& rq) {
   }
   for (const MovedRobot& m : rq.moved) {
     if (m.robot < 0 || m.robot >= static_cast<int>(n)) return "re-plan: no robot " + std::to_string(m.robot) + " moved";
+    if (m.yaw) continue;  // its body at a yaw off the grid, and its turn, are connectToLattice's to check
+    if (std::string why = poseProblem(*rq.map, rq.graphs->cells(m.robot), m.pose); !why.empty())
+      return robotLabel(rq.instance->robots[m.robot]) + " stands off its path at " + toString(m.pose) + ": " + why;
   }
   for (const AvoidedSteps& a : rq.avoid) {
     if (a.robot < 0 || a.robot >= static_cast<int>(n)) return "re-plan: no robot " + std::to_string(a.robot) + " to avoid";

@@ -53,8 +53,19 @@ class SimulatedRobot:
 
     def revise(self, states):
         """The same plan, re-planned from the state the robot was released to: the states up to
-        there are unchanged, so the robot keeps where it is on them and what it was released."""
-        self.states = [tuple(s) for s in states]
+        there are unchanged, so the robot keeps where it is on them and what it was released.
+        Where the new states differ at the step the robot is on, it was planned again from where
+        it stands (off its path): it stops, its drift ends there, and it goes on from the first
+        new state nearest to that pose once it is released again."""
+        new = [tuple(s) for s in states]
+        span = 2 if self.step_seconds > 0.0 else 1  # the step it is doing, or the state it stands at
+        here = self.states[self.index:self.index + span]
+        if here and new[self.index:self.index + span] != here:
+            x, y, _ = self.offset_pose()
+            nearest = min(range(len(new)), key=lambda k: (math.hypot(new[k][0] - x, new[k][1] - y), k))
+            self.index, self.fraction, self.step_seconds = nearest, 0.0, 0.0
+            self.pose, self.drift, self.released = new[nearest], None, nearest
+        self.states = new
         self.released = min(self.released, len(self.states) - 1)
 
     def arrived(self):

@@ -59,6 +59,8 @@ void ExecutionMonitor::start(ExecutablePlan plan, double seconds_per_step, const
   }
   waiting_since_.assign(ids_.size(), ros::Time());
   touching_.clear();
+  poses_.clear();
+  cells_.reset();
   seconds_per_step_ = seconds_per_step;
 }
 
@@ -70,10 +72,32 @@ std::vector<int> ExecutionMonitor::blockedRobots() const {
   return out;
 }
 
-ReplanReport ExecutionMonitor::replan(const std::vector<int>& robots, double time_limit) {
+std::vector<int> ExecutionMonitor::offPathRobots() const {
+  std::vector<int> out;
+  for (std::size_t i = 0; i < message_.robots.size(); ++i) {
+    if (message_.robots[i].state == RobotExecutionMsg::OFF_PATH) out.push_back(static_cast<int>(i));
+  }
+  return out;
+}
+
+ReplanReport ExecutionMonitor::replan(const std::vector<int>& robots, double time_limit, const PoseTolerance& tolerance) {
   ReplanRequest rq;
   std::string names;
   for (int a : robots) {
+    const bool off_path = message_.robots[a].state == RobotExecutionMsg::OFF_PATH && a < static_cast<int>(poses_.size()) && poses_[a];
+    if (off_path) {
+      // From where it stands: a pose no state of its plan has.
+      const GridPoseFit fit = toGridPose(*plan_.map, *poses_[a], tolerance);
+      if (!fit.ok()) {
+        ReplanReport report;
+        report.status = SolveStatus::InvalidInput;
+        report.message = "'" + ids_[a] + "' is off its path at a pose that is not on the map: " + fit.error;
+        return report;
+      }
+      rq.moved.push_back({a, fit.pose, fit.yaw});
+      names += (names.empty() ? "'" : ", '") + ids_[a] + "' (off its path)";
+      continue;
+    }
     if (tracker_->done(a)) continue;
     rq.robots.push_back(a);
     names += (names.empty() ? "'" : ", '") + ids_[a] + "'";
@@ -82,7 +106,7 @@ ReplanReport ExecutionMonitor::replan(const std::vector<int>& robots, double tim
       rq.avoid.push_back({holder->robot, holder->state});
     }
   }
-  if (rq.robots.empty()) {
+  if (rq.robots.empty() && rq.moved.empty()) {
     ReplanReport report;
     report.nothing_to_do = true;
     report.message = "every robot asked for has arrived";
@@ -158,7 +182,8 @@ ReplanReport ExecutionMonitor::replanWith(ReplanRequest rq, const std::string& n
     message_.robots[a].last_state = static_cast<std::uint32_t>(poses.size() - 1);
     waiting_since_[a] = ros::Time();
   }
-  tracker_ = std::make_unique<ExecutionTracker>(plan_.plan, result.dependencies, rq.progress);
+  tracker_ = std::make_unique<ExecutionTracker>(plan_.plan, result.dependencies, result.progress);
+  cells_.reset();
   message_.dependencies = static_cast<std::uint32_t>(result.dependencies.count());
   message_.done = tracker_->done();
   ++message_.revision;
@@ -180,6 +205,22 @@ int ExecutionMonitor::progressFrom(int robot, const geometry_msgs::Pose2D& pose)
   return k < 0 ? tracker_->progress(robot) : k;
 }
 
+std::pair<Cell, CellSet> ExecutionMonitor::footprintAt(int robot, const geometry_msgs::Pose2D& pose) const {
+  const GridPoint at = toGrid(*plan_.map, pose);
+  const Cell cell{static_cast<int>(std::floor(at.x)), static_cast<int>(std::floor(at.y))};
+  const Eigen::Vector2d offset(at.x - cell.x - 0.5, at.y - cell.y - 0.5);
+  return {cell, footprintCellsAt(plan_.instance.robots[robot].footprint, at.yaw, offset)};
+}
+
+const PlanCells& ExecutionMonitor::planCells() {
+  if (!cells_) {
+    ActionModel model;
+    model.step = plan_.lattice_step;
+    cells_ = std::make_unique<PlanCells>(plan_.instance, plan_.plan, model);
+  }
+  return *cells_;
+}
+
 std::set<std::pair<int, int>> ExecutionMonitor::overlaps(
     const std::vector<std::optional<geometry_msgs::Pose2D>>& poses) const {
   const GridMap& map = *plan_.map;
@@ -190,11 +231,7 @@ std::set<std::pair<int, int>> ExecutionMonitor::overlaps(
   }
   std::vector<std::optional<std::pair<Cell, CellSet>>> cells(n);
   auto cellsOf = [&](int i) -> const std::pair<Cell, CellSet>& {
-    if (!cells[i]) {
-      const Cell cell{static_cast<int>(std::floor(at[i].x)), static_cast<int>(std::floor(at[i].y))};
-      const Eigen::Vector2d offset(at[i].x - cell.x - 0.5, at[i].y - cell.y - 0.5);
-      cells[i].emplace(cell, footprintCellsAt(plan_.instance.robots[i].footprint, at[i].yaw, offset));
-    }
+    if (!cells[i]) cells[i].emplace(footprintAt(i, *poses[i]));
     return *cells[i];
   };
   std::set<std::pair<int, int>> out;
@@ -220,6 +257,7 @@ fleet_planner::FleetExecution ExecutionMonitor::update(const std::vector<std::op
     if (poses[i]) tracker_->reportProgress(i, progressFrom(i, *poses[i]));
   }
   // Overlaps: a pair counts once per contact, however long it lasts.
+  poses_ = poses;
   const auto touching = overlaps(poses);
   new_contacts_.clear();
   auto describe = [&](int i) {
@@ -235,22 +273,39 @@ fleet_planner::FleetExecution ExecutionMonitor::update(const std::vector<std::op
   }
   touching_ = touching;
 
+  // Robots off their paths, where they stand.
+  std::vector<std::pair<int, std::pair<Cell, CellSet>>> off_path;
+  for (int i = 0; i < n && i < static_cast<int>(poses.size()); ++i) {
+    if (poses[i] && !tracker_->done(i) &&
+        matchers_[i].distanceToPath(*poses[i], tracker_->progress(i), released(i)) > settings_.off_path_tolerance)
+      off_path.emplace_back(i, footprintAt(i, *poses[i]));
+  }
   const double elapsed = (now - message_.header.stamp).toSec();
   for (int i = 0; i < n; ++i) {
     auto& r = message_.robots[i];
+    const int sent = r.released;
     r.progress = tracker_->progress(i);
     r.released = released(i);
+    std::string kept_clear_of;  // an OFF_PATH robot that stands on its next released step
+    for (const auto& [o, cells] : off_path) {
+      for (int t = std::max<int>(sent, r.progress); o != i && t < static_cast<int>(r.released); ++t) {
+        if (!overlap(planCells().during(i, t), {&cells.second, cells.first})) continue;
+        r.released = t;
+        kept_clear_of = ids_[o];
+      }
+    }
     r.next_waypoint = plan_.poses[i][std::min<int>(r.released, r.progress + 1)];
     const auto holder = tracker_->blockedBy(i);
     const bool held = tracker_->releasedUpTo(i) == static_cast<int>(r.progress);  // not merely not yet released
     r.blocked_by = holder && held ? ids_[holder->robot] : "";
+    if (!kept_clear_of.empty() && r.released == r.progress) r.blocked_by = kept_clear_of;
     const int next = std::min<int>(r.progress + 1, r.last_state);
     r.lateness = tracker_->done(i) ? 0.0 : std::max(0.0, elapsed - next * message_.seconds_per_step);
     if (tracker_->done(i)) {
       r.state = RobotExecutionMsg::ARRIVED;
     } else if (i >= static_cast<int>(poses.size()) || !poses[i]) {
       r.state = RobotExecutionMsg::NO_POSE;
-    } else if (matchers_[i].distanceToPath(*poses[i], r.progress, r.released) > settings_.off_path_tolerance) {
+    } else if (std::any_of(off_path.begin(), off_path.end(), [i](const auto& o) { return o.first == i; })) {
       r.state = RobotExecutionMsg::OFF_PATH;
     } else if (r.released > r.progress) {
       r.state = RobotExecutionMsg::DRIVING;

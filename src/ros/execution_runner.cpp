@@ -60,7 +60,7 @@ void ExecutionRunner::onRevised(RevisionCallback callback) {
 }
 
 ReplanReport ExecutionRunner::replanLocked(const std::vector<int>& robots, double time_limit) {
-  ReplanReport report = monitor_.replan(robots, time_limit);
+  ReplanReport report = monitor_.replan(robots, time_limit, config_.poseTolerance());
   reported(report);
   return report;
 }
@@ -186,17 +186,20 @@ void ExecutionRunner::onTimer(const ros::TimerEvent&) {
     const ros::Time now = ros::Time::now();
     fleet_planner::FleetExecution execution = monitor_.update(poses, now);
     for (const std::string& contact : monitor_.newContacts()) ROS_WARN("fleet_planner: execution: contact: %s", contact.c_str());
+    // Each robot BLOCKED for longer than blocked_timeout or OFF_PATH, at most once per
+    // blocked_timeout, and one re-plan per update: the lock (and the service calls waiting for
+    // it) is held for at most one replan_time_limit, and the other robots get their turns next.
+    std::vector<int> candidates;
+    if (config_.replan_off_path) candidates = monitor_.offPathRobots();
     if (config_.replan_blocked) {
-      // Each robot BLOCKED for longer than blocked_timeout, at most once per blocked_timeout, and
-      // one re-plan per update: the lock (and the service calls waiting for it) is held for at
-      // most one replan_time_limit, and the other BLOCKED robots get their turns next.
-      for (int a : monitor_.blockedRobots()) {
-        ros::Time& last = last_attempt_[monitor_.robotIds()[a]];
-        if (!last.isZero() && (now - last).toSec() < config_.blocked_timeout) continue;
-        last = now;
-        if (replanLocked({a}, config_.replan_time_limit).merged) execution = monitor_.update(poses, ros::Time::now());
-        break;
-      }
+      for (int a : monitor_.blockedRobots()) candidates.push_back(a);
+    }
+    for (int a : candidates) {
+      ros::Time& last = last_attempt_[monitor_.robotIds()[a]];
+      if (!last.isZero() && (now - last).toSec() < config_.blocked_timeout) continue;
+      last = now;
+      if (replanLocked({a}, config_.replan_time_limit).merged) execution = monitor_.update(poses, ros::Time::now());
+      break;
     }
     execution_pub_.publish(execution);
     for (const auto& robot : execution.robots) {

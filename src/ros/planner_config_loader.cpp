@@ -84,7 +84,7 @@ const std::vector<std::string>& plannerParameterNames() {
       "map_frame",         "base_frame",         "tf_timeout",      "playback",          "planned_frame",
       "playback_rate",     "playback_loop",      "execute",         "execution_rate",    "progress_tolerance",
       "progress_heading_tolerance", "blocked_timeout", "late_warning", "off_path_tolerance",
-      "replan_blocked", "replan_time_limit"};
+      "replan_blocked", "replan_off_path", "replan_time_limit"};
   return names;
 }
 
@@ -141,6 +141,7 @@ PlannerConfig loadPlannerConfig(const ros::NodeHandle& nh) {
   r.read("late_warning", c.late_warning);
   r.read("off_path_tolerance", c.off_path_tolerance);
   r.read("replan_blocked", c.replan_blocked);
+  r.read("replan_off_path", c.replan_off_path);
   r.read("replan_time_limit", c.replan_time_limit);
   return c;
 }

@@ -47,6 +47,29 @@ class FollowsRevisions(unittest.TestCase):
         self.assertEqual(sim.robots["a"].pose, (1.0, 1.0, 0.0))
 
 
+    def test_a_robot_planned_again_from_off_its_path_goes_on_from_there(self):
+        sim = FleetSimulation(1.0)
+        sim.follow({"a": LINE})
+        sim.release("a", 3)
+        sim.start_drift("a", 4.0, 0.5)
+        run(sim, 1.5)  # on its way along the line, drifted to its left
+        x, y, yaw = sim.robots["a"].offset_pose()
+        self.assertGreater(y, 0.3)
+        # Planned again from where it stands: a rest at its cell, then back to the line's end.
+        rest = (round(x), 0.5, 0.0)
+        revised = [rest, rest, rest, (2.0, 0.5, 0.0), (2.0, 0.0, 0.0)]
+        sim.revise({"a": revised})
+        robot = sim.robots["a"]
+        self.assertIsNone(robot.drift)
+        self.assertEqual((robot.index, robot.pose, robot.released), (0, rest, 0))
+        run(sim, 2.0)
+        self.assertEqual(robot.pose, rest)  # not released yet
+        sim.release("a", 4)
+        run(sim, 5.0)
+        self.assertTrue(robot.arrived())
+        self.assertEqual(robot.offset_pose(), (2.0, 0.0, 0.0))
+
+
 class DrivesReleasedSteps(unittest.TestCase):
     def test_stands_still_until_released(self):
         sim = FleetSimulation(1.0)

@@ -2,6 +2,8 @@
 // robots' poses as a robot's TF would give them.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include <diagnostic_msgs/DiagnosticStatus.h>
 #include <fleet_planner/RobotExecution.h>
 
@@ -44,7 +46,7 @@ class ExecutionMonitorTest : public ::testing::Test {
       bool moved = false;
       for (std::size_t i = 0; i < poses.size(); ++i) {
         if (static_cast<int>(i) == held || e.robots[i].released == e.robots[i].progress) continue;
-        poses[i] = state(i, e.robots[i].released);
+        poses[i] = monitor.plan().poses[i][e.robots[i].released];  // the plan as revised
         moved = true;
       }
       t += 0.1;
@@ -158,6 +160,52 @@ TEST_F(ExecutionMonitorTest, ARobotAwayFromItsPathIsOffItsPath) {
   const auto e = monitor.update(poses, ros::Time(102));
   EXPECT_EQ(e.robots[2].state, RobotMsg::OFF_PATH);
   EXPECT_EQ(executionDiagnostics(e, {}, ros::Time(102)).status[3].level, diagnostic_msgs::DiagnosticStatus::ERROR);
+}
+
+// The tug is pushed off its path onto amr_1's way: amr_1 is released no further than the step
+// before the place where the tug stands, whatever the dependencies allow, and goes on once the
+// tug is back.
+TEST_F(ExecutionMonitorTest, NobodyIsReleasedOntoWhereARobotOffItsPathStands) {
+  ExecutionMonitor monitor = started();
+  Poses poses = startPoses();
+  monitor.update(poses, ros::Time(100));
+  const auto& way = call.executable->poses[0];
+  const int k = static_cast<int>(way.size()) * 2 / 3;
+  poses[2] = way[k];  // two thirds along amr_1's way
+  double t = 100;
+  auto e = driveAllBut(monitor, poses, 2, t);
+  EXPECT_EQ(e.robots[2].state, RobotMsg::OFF_PATH);
+  EXPECT_EQ(e.collisions, 0u);
+  EXPECT_LT(e.robots[0].released, k);
+  EXPECT_EQ(e.robots[0].blocked_by, "tug");
+  poses[2] = startPoses()[2];  // back where it was
+  e = driveAllBut(monitor, poses, -1, t);
+  EXPECT_TRUE(e.done);
+  EXPECT_EQ(e.collisions, 0u);
+}
+
+// Pushed sideways off its path, the tug is planned again from where it stands: its timeline
+// begins there and ends at its goal, and everybody arrives.
+TEST_F(ExecutionMonitorTest, ARobotOffItsPathIsPlannedAgainFromWhereItStands) {
+  ExecutionMonitor monitor = started();
+  Poses poses = startPoses();
+  monitor.update(poses, ros::Time(100));
+  poses[2]->x += 0.5;
+  EXPECT_EQ(monitor.update(poses, ros::Time(100.1)).robots[2].state, RobotMsg::OFF_PATH);
+  EXPECT_EQ(monitor.offPathRobots(), std::vector<int>{2});
+  const geometry_msgs::Pose2D goal = call.executable->poses[2].back();
+  const ReplanReport report = monitor.replan({2}, 1.0, PoseTolerance{});
+  ASSERT_TRUE(report.merged) << report.message;
+  EXPECT_NE(report.message.find("off its path"), std::string::npos) << report.message;
+  const auto& timeline = monitor.plan().poses[2];
+  EXPECT_LE(std::hypot(timeline.front().x - poses[2]->x, timeline.front().y - poses[2]->y), kRes);
+  EXPECT_DOUBLE_EQ(timeline.back().x, goal.x);
+  EXPECT_DOUBLE_EQ(timeline.back().y, goal.y);
+  EXPECT_NE(monitor.update(poses, ros::Time(100.2)).robots[2].state, RobotMsg::OFF_PATH);
+  double t = 100.2;
+  const auto e = driveAllBut(monitor, poses, -1, t);
+  EXPECT_TRUE(e.done);
+  EXPECT_EQ(e.collisions, 0u);
 }
 
 TEST_F(ExecutionMonitorTest, MissingPosesAndLongWaitsAreReported) {

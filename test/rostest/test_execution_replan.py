@@ -4,7 +4,8 @@ start; robots BLOCKED behind it are planned again around it while the others kee
 
 Checks: every robot arrives, no two robots' footprints ever shared a cell (the planner's monitor,
 from TF), re-plans were merged (revisions of the same plan, followed by the simulator), and the
-robots that waited for tug_1 arrived before it moved again. ~replan answers an unknown robot with
+robots that waited for tug_1 arrived before it moved again. amr_1, which drifts off its path, is
+planned again from where it stands (at least once). ~replan answers an unknown robot with
 INVALID_REQUEST. Then ~add_tasks sends two robots back to their starts while the others stand:
 they arrive there, still without contact.
 
@@ -27,6 +28,7 @@ from fleet_planner.tasks_config import load_tasks
 from plan_when_ready import plan_when_ready
 
 HELD = "tug_1"
+DRIFTS = "amr_1"
 BACK = ["amr_3", "tug_1"]  # sent back to their starts once everybody has arrived
 
 
@@ -34,12 +36,15 @@ class ExecutionReplanTest(unittest.TestCase):
     def test_robots_blocked_by_a_stopped_one_are_replanned_around_it(self):
         rospy.init_node("test_execution_replan")
         tasks = load_tasks(rospy.get_param("~tasks_file"))
-        seen = {"last": None, "waited_for_held": set(), "arrived_before_held": set(), "revisions": 0}
+        seen = {"last": None, "waited_for_held": set(), "arrived_before_held": set(), "revisions": 0,
+                "off_path": set()}
         lock = threading.Lock()
 
         def on_execution(msg):
             with lock:
                 seen["last"] = msg
+                if "(off its path): planned" in msg.last_replan:
+                    seen["off_path"].add(msg.last_replan)
                 by_id = {r.robot_id: r for r in msg.robots}
                 held = by_id.get(HELD)
                 if held is None:
@@ -81,9 +86,10 @@ class ExecutionReplanTest(unittest.TestCase):
         with lock:
             last = seen["last"]
             summary = ("replans %s (refused %s, last: %s), revisions seen %d, collisions %s; waited for %s: %s; "
-                       "arrived before it moved: %s") % (
+                       "arrived before it moved: %s; off-path re-plans: %s") % (
                 last and last.replans, last and last.replans_refused, last and last.last_replan, seen["revisions"],
-                last and last.collisions, HELD, sorted(seen["waited_for_held"]), sorted(seen["arrived_before_held"]))
+                last and last.collisions, HELD, sorted(seen["waited_for_held"]), sorted(seen["arrived_before_held"]),
+                sorted(seen["off_path"]))
         rospy.loginfo("execution_replan: %s", summary)
         added_after = last.revision if last else 0
         self.assertIsNotNone(last, "no execution message")
@@ -95,6 +101,8 @@ class ExecutionReplanTest(unittest.TestCase):
         self.assertEqual(seen["revisions"], last.revision, summary)
         # Robots that waited for the stopped robot and were re-planned did not wait for it to move.
         self.assertTrue(seen["waited_for_held"] & seen["arrived_before_held"], summary)
+        # The drifting robot was planned again from where it stood.
+        self.assertTrue(any(DRIFTS in s for s in seen["off_path"]), summary)
         self.assertEqual(replan(ReplanRobotsRequest()).status, ReplanRobotsResponse.NOTHING_TO_DO)
 
         # New goals while the plan runs: back to their starts.

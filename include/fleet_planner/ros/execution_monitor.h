@@ -7,6 +7,8 @@
 /// A robot's progress comes from its pose (ProgressMatcher: within the tolerances of a state, or
 /// on its way to the next); it only goes forward, and only through released states. Robots that stand still are
 /// never moved on: a robot that falls behind holds those that must wait for it, nobody else.
+/// A robot OFF_PATH stands where its plan does not know it: nobody is released into a step that
+/// covers its footprint where it stands (what was released already stays released).
 #include <map>
 #include <memory>
 #include <optional>
@@ -21,6 +23,7 @@
 #include <ros/time.h>
 
 #include "fleet_planner/execution/execution_tracker.h"
+#include "fleet_planner/execution/plan_cells.h"
 #include "fleet_planner/execution/replanning.h"
 #include "fleet_planner/ros/conversions.h"
 #include "fleet_planner/ros/fleet_planning_service.h"
@@ -69,11 +72,15 @@ class ExecutionMonitor {
   const ros::Time& stamp() const { return message_.header.stamp; }
   /// Robots BLOCKED at the last update (plan order).
   std::vector<int> blockedRobots() const;
+  /// Robots OFF_PATH at the last update (plan order).
+  std::vector<int> offPathRobots() const;
 
   /// Plans `robots` again from the states they have reached (execution/replanning.h), each around
   /// the next steps of the robot it waits for, within `time_limit` seconds; merges the new paths
-  /// when they keep every other robot released as far as it is. Requires running().
-  ReplanReport replan(const std::vector<int>& robots, double time_limit);
+  /// when they keep every other robot released as far as it is. A robot OFF_PATH at the last
+  /// update is planned from its pose then (snapped within `tolerance`; ReplanRequest::moved).
+  /// Requires running().
+  ReplanReport replan(const std::vector<int>& robots, double time_limit, const PoseTolerance& tolerance);
   /// New goals (map frame, any yaw) for some robots, planned like replan() (replanning.h: new
   /// targets). A goal that cannot be put on the map within `tolerance` is refused (invalid_goal).
   ReplanReport assignGoals(const std::vector<std::pair<int, geometry_msgs::Pose2D>>& goals, double time_limit,
@@ -93,6 +100,10 @@ class ExecutionMonitor {
   int released(int robot) const;
   /// Pairs of robots (i < j) whose footprints at their poses share a map cell.
   std::set<std::pair<int, int>> overlaps(const std::vector<std::optional<geometry_msgs::Pose2D>>& poses) const;
+  /// The map cells robot i's footprint covers at `pose`: a set relative to a cell.
+  std::pair<Cell, CellSet> footprintAt(int robot, const geometry_msgs::Pose2D& pose) const;
+  /// The running plan's cells (built when first needed after a start or a merge).
+  const PlanCells& planCells();
 
   ExecutionSettings settings_;
   ExecutablePlan plan_;
@@ -103,6 +114,8 @@ class ExecutionMonitor {
   std::vector<ros::Time> waiting_since_;  ///< when each robot last stood at its release (zero: driving)
   std::set<std::pair<int, int>> touching_;  ///< overlapping pairs at the last update
   std::vector<std::string> new_contacts_;
+  std::vector<std::optional<geometry_msgs::Pose2D>> poses_;  ///< at the last update
+  std::unique_ptr<PlanCells> cells_;  ///< of plan_ (null: not built yet)
   std::uint32_t plans_ = 0;
   double seconds_per_step_ = 1.0;
 };

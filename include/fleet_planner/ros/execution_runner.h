@@ -6,9 +6,10 @@
 ///   ~execution/<robot_id>   fleet_planner/RobotExecution, latched, when it changes;
 ///   /diagnostics            diagnostic_msgs/DiagnosticArray, once a second.
 /// A new plan replaces the running one. With `replan_blocked`, a robot BLOCKED for longer than
-/// blocked_timeout is planned again around the robot it waits for (ExecutionMonitor::replan; at
-/// most once per blocked_timeout); a merged re-plan is handed to `on_revised` (the node
-/// publishes the revised timelines). No exception leaves the timer.
+/// blocked_timeout is planned again around the robot it waits for, and with `replan_off_path` a
+/// robot OFF_PATH from the pose where it stands (ExecutionMonitor::replan; each robot at most
+/// once per blocked_timeout, one re-plan per update); a merged re-plan is handed to `on_revised`
+/// (the node publishes the revised timelines). No exception leaves the timer.
 #include <cstdint>
 #include <functional>
 #include <map>

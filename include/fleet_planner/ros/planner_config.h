@@ -70,6 +70,7 @@ struct PlannerConfig {
   double late_warning = 5.0;          ///< seconds behind the plan before the diagnostics warn
   double off_path_tolerance = 0.3;    ///< metres from its path before a robot is OFF_PATH
   bool replan_blocked = true;         ///< re-plan a BLOCKED robot around the robot it waits for
+  bool replan_off_path = true;        ///< re-plan an OFF_PATH robot from where it stands
   double replan_time_limit = 1.0;     ///< seconds for one re-plan (the node's execution waits meanwhile)
 
   OccupancyPolicy occupancyPolicy() const { return {occupied_threshold, unknown_policy == "free"}; }
