@@ -8,6 +8,7 @@
 #include <memory>
 
 #include "execution_worlds.h"
+#include "replan_hooks.h"
 #include "fleet_planner/execution/execution_simulation.h"
 #include "fleet_planner/execution/replanning.h"
 
@@ -38,18 +39,8 @@ struct Pusher {
     m.pose.x += kHeadingStep[kRotateCcw[at.heading]].x;
     m.pose.y += kHeadingStep[kRotateCcw[at.heading]].y;
     m.yaw = headingYaw(at.heading) + 0.4;
-    ReplanRequest rq;
-    rq.map = &world->map;
-    rq.instance = &world->instance;
-    rq.graphs = graphs;
-    rq.plan = &world->plan;
-    for (int i = 0; i < tracker.robots(); ++i) {
-      rq.progress.push_back(tracker.progress(i));
-      rq.released.push_back(tracker.releasedUpTo(i));
-    }
+    ReplanRequest rq = requestFrom(*world, *graphs, world->instance, world->plan, tracker, seed);
     rq.moved = {m};
-    rq.seed = seed;
-    rq.deadline = Deadline::in(5.0);
     ReplanResult r = replanRobots(rq);
     if (!r.success()) {
       ++refused[statusName(r.status)];
@@ -57,13 +48,7 @@ struct Pusher {
     }
     ++made;
     check(rq, r, m);
-    SimulatedReplan next;
-    next.instance = std::make_shared<const Instance>(std::move(r.instance));
-    next.plan = std::make_shared<const Plan>(std::move(r.plan));
-    next.cells = std::make_shared<const PlanCells>(*next.instance, *next.plan, world->model);
-    next.dependencies = std::move(r.dependencies);
-    next.progress = std::move(r.progress);
-    return next;
+    return simulatedReplan(std::move(r), world->model);
   }
 
   void check(const ReplanRequest& rq, const ReplanResult& r, const MovedRobot& m) {
@@ -92,11 +77,7 @@ struct Pusher {
       if (static_cast<int>(j) != m.robot && r.plan.paths[j] != rq.plan->paths[j])
         failures.push_back(where + "robot " + std::to_string(j) + "'s path changed");
     }
-    const ExecutionTracker resumed(r.plan, r.dependencies, r.progress);
-    for (int j = 0; j < resumed.robots(); ++j) {
-      if (j != m.robot && resumed.releasedUpTo(j) < rq.released[j])
-        failures.push_back(where + "robot " + std::to_string(j) + " released less far");
-    }
+    checkReleasesKept(rq, r, m.robot, where, failures);
   }
 };
 

@@ -12,6 +12,7 @@
 #include <memory>
 
 #include "execution_worlds.h"
+#include "replan_hooks.h"
 #include "fleet_planner/execution/execution_simulation.h"
 #include "fleet_planner/solvers/search/reservation_table.h"
 
@@ -56,19 +57,9 @@ struct BlockedReplanner {
       if (a == stopped || s.moving[a] || tracker.done(a) || !holder || holder->robot != stopped ||
           tracker.releasedUpTo(a) != tracker.progress(a))
         continue;
-      ReplanRequest rq;
-      rq.map = &world->map;
-      rq.instance = &world->instance;
-      rq.graphs = graphs;
-      rq.plan = &plan(s);
-      for (int i = 0; i < n; ++i) {
-        rq.progress.push_back(tracker.progress(i));
-        rq.released.push_back(tracker.releasedUpTo(i));
-      }
+      ReplanRequest rq = requestFrom(*world, *graphs, world->instance, plan(s), tracker, seed);
       rq.robots = {a};
       rq.avoid = {{stopped, holder->state}};
-      rq.seed = seed;
-      rq.deadline = Deadline::in(5.0);
       ++attempts;
       ReplanResult r = replanRobots(rq);
       if (!r.success()) {
@@ -77,11 +68,7 @@ struct BlockedReplanner {
       }
       check(rq, r, a);
       ++successes;
-      SimulatedReplan next;
-      next.instance = std::make_shared<const Instance>(std::move(r.instance));
-      next.plan = std::make_shared<const Plan>(std::move(r.plan));
-      next.cells = std::make_shared<const PlanCells>(*next.instance, *next.plan, world->model);
-      next.dependencies = std::move(r.dependencies);
+      SimulatedReplan next = simulatedReplan(std::move(r), world->model);
       current_ = next.plan;
       return next;
     }
@@ -103,11 +90,7 @@ struct BlockedReplanner {
       if (j == a && (after.back() != before.back())) failures.push_back(where + "its new path ends elsewhere");
     }
     checkStandsStill(rq, r, world->model, where, failures);
-    const ExecutionTracker resumed(r.plan, r.dependencies, rq.progress);
-    for (int j = 0; j < resumed.robots(); ++j) {
-      if (j != a && resumed.releasedUpTo(j) < rq.released[j])
-        failures.push_back(where + "robot " + std::to_string(j) + " released less far");
-    }
+    checkReleasesKept(rq, r, a, where, failures);
   }
 
   std::shared_ptr<const Plan> current_;
@@ -206,30 +189,18 @@ struct GoalGiver {
       if (given[a] || !tracker.done(a)) continue;
       given[a] = true;
       const Instance& now = instance ? *instance : world->instance;
-      ReplanRequest rq;
-      rq.map = &world->map;
-      rq.instance = &now;
-      rq.graphs = graphs;
-      rq.plan = plan ? plan.get() : &world->plan;
-      for (int i = 0; i < n; ++i) {
-        rq.progress.push_back(tracker.progress(i));
-        rq.released.push_back(tracker.releasedUpTo(i));
-      }
+      ReplanRequest rq = requestFrom(*world, *graphs, now, plan ? *plan : world->plan, tracker, seed);
       const Robot& original = world->instance.robots[a];
       rq.targets = {{a, original.start, original.start_yaw}};
-      rq.seed = seed;
-      rq.deadline = Deadline::in(5.0);
       ++asked;
       ReplanResult r = replanRobots(rq);
       if (r.status == SolveStatus::InternalError) failures.push_back(world->name + ": " + r.reason);
       if (!r.success()) continue;
       ++made;
       check(rq, r, a);
-      SimulatedReplan next;
-      next.instance = instance = std::make_shared<const Instance>(std::move(r.instance));
-      next.plan = plan = std::make_shared<const Plan>(std::move(r.plan));
-      next.cells = std::make_shared<const PlanCells>(*next.instance, *next.plan, world->model);
-      next.dependencies = std::move(r.dependencies);
+      SimulatedReplan next = simulatedReplan(std::move(r), world->model);
+      instance = next.instance;
+      plan = next.plan;
       return next;
     }
     return std::nullopt;
