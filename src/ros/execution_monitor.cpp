@@ -150,7 +150,9 @@ ReplanReport ExecutionMonitor::replanWith(ReplanRequest rq, const std::string& n
     report.message = names + ": the running plan has no state graphs to plan on";
     return report;
   }
-  rq.deadline = Deadline::in(time_limit);
+  // The search gets three quarters of the time: the rest is for checking the new plan and
+  // building its dependencies (which walk the whole plan), so that a re-plan ends within it.
+  rq.deadline = Deadline::in(0.75 * time_limit);
   rq.seed = (static_cast<std::uint64_t>(plans_) << 20) + message_.revision;
   ReplanResult result = replanRobots(rq);
   report.time_s = result.time_s;
