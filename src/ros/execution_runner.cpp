@@ -189,13 +189,15 @@ void ExecutionRunner::onTimer(const ros::TimerEvent&) {
     // Each robot BLOCKED for longer than blocked_timeout or OFF_PATH, at most once per
     // blocked_timeout, and one re-plan per update: the lock (and the service calls waiting for
     // it) is held for at most one replan_time_limit, and the other robots get their turns next.
-    std::vector<int> candidates;
-    if (config_.replan_off_path) candidates = monitor_.offPathRobots();
-    if (config_.replan_blocked) {
-      for (int a : monitor_.blockedRobots()) candidates.push_back(a);
+    std::vector<std::pair<int, const char*>> candidates;
+    if (config_.replan_off_path) {
+      for (int a : monitor_.offPathRobots()) candidates.emplace_back(a, " off path");
     }
-    for (int a : candidates) {
-      ros::Time& last = last_attempt_[monitor_.robotIds()[a]];
+    if (config_.replan_blocked) {
+      for (int a : monitor_.blockedRobots()) candidates.emplace_back(a, " blocked");
+    }
+    for (const auto& [a, reason] : candidates) {
+      ros::Time& last = last_attempt_[monitor_.robotIds()[a] + reason];
       if (!last.isZero() && (now - last).toSec() < config_.blocked_timeout) continue;
       last = now;
       if (replanLocked({a}, config_.replan_time_limit).merged) execution = monitor_.update(poses, ros::Time::now());

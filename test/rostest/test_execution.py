@@ -20,7 +20,7 @@ from fleet_planner.msg import FleetExecution, RobotExecution
 from fleet_planner.ros_conversions import task_to_msg
 from fleet_planner.srv import PlanFleet, PlanFleetRequest, PlanFleetResponse
 from fleet_planner.tasks_config import load_tasks
-from plan_when_ready import plan_when_ready
+from plan_when_ready import plan_when_ready, wait_until
 
 HELD = "tug_1"
 
@@ -53,13 +53,11 @@ class ExecutionTest(unittest.TestCase):
         response = plan_when_ready(plan, request)
         self.assertEqual(response.status, PlanFleetResponse.SUCCESS, response.message)
 
-        deadline = rospy.Time.now() + rospy.Duration(180)
-        while not rospy.is_shutdown() and rospy.Time.now() < deadline:
+        def all_arrived():
             with lock:
-                last = seen["last"]
-            if last is not None and last.done:
-                break
-            rospy.sleep(0.2)
+                return seen["last"] is not None and seen["last"].done
+
+        wait_until(all_arrived, 180)
         with lock:
             last = seen["last"]
             summary = "dependencies %s, collisions %s; %s late by up to %.1f s; waited for it: %s; arrived before it: %s" % (

@@ -25,7 +25,7 @@ from fleet_planner.msg import RobotTask
 from fleet_planner.srv import AddTasks, AddTasksRequest, AddTasksResponse, PlanFleet, PlanFleetRequest, \
     PlanFleetResponse, ReplanRobots, ReplanRobotsRequest, ReplanRobotsResponse
 from fleet_planner.tasks_config import load_tasks
-from plan_when_ready import plan_when_ready
+from plan_when_ready import plan_when_ready, wait_until
 
 HELD = "tug_1"
 DRIFTS = "amr_1"
@@ -76,13 +76,11 @@ class ExecutionReplanTest(unittest.TestCase):
         self.assertEqual(bad.status, ReplanRobotsResponse.INVALID_REQUEST)
         self.assertIn("no_such_robot", bad.message)
 
-        deadline = rospy.Time.now() + rospy.Duration(180)
-        while not rospy.is_shutdown() and rospy.Time.now() < deadline:
+        def all_arrived():
             with lock:
-                last = seen["last"]
-            if last is not None and last.done:
-                break
-            rospy.sleep(0.2)
+                return seen["last"] is not None and seen["last"].done
+
+        wait_until(all_arrived, 180)
         with lock:
             last = seen["last"]
             summary = ("replans %s (refused %s, last: %s), revisions seen %d, collisions %s; waited for %s: %s; "
@@ -111,13 +109,13 @@ class ExecutionReplanTest(unittest.TestCase):
         added = add_tasks(AddTasksRequest(tasks=home))
         self.assertEqual(added.status, AddTasksResponse.SUCCESS, added.message)
         self.assertEqual(sorted(added.planned), sorted(BACK))
-        deadline = rospy.Time.now() + rospy.Duration(120)
-        while not rospy.is_shutdown() and rospy.Time.now() < deadline:
-            rospy.sleep(0.3)
+        def back_home():
             with lock:
-                last = seen["last"]
-            if last.done and last.revision > added_after:
-                break
+                return seen["last"].done and seen["last"].revision > added_after
+
+        wait_until(back_home, 120, 0.3)
+        with lock:
+            last = seen["last"]
         self.assertTrue(last.done, "the new goals were not reached: %s" % [
             (r.robot_id, r.state, r.progress, r.last_state, r.blocked_by) for r in last.robots])
         self.assertEqual(last.collisions, 0)

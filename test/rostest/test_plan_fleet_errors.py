@@ -6,7 +6,6 @@ takes starts from TF, publishes markers and timelines, and stops at startup on a
 Run: rostest fleet_planner plan_fleet_errors.test
 """
 import copy
-import math
 import os
 import subprocess
 import threading

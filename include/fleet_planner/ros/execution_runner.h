@@ -70,7 +70,9 @@ class ExecutionRunner {
   std::mutex mutex_;  ///< guards the monitor
   ExecutionMonitor monitor_;
   RevisionCallback on_revised_;
-  std::map<std::string, ros::Time> last_attempt_;  ///< per robot: its last automatic re-plan
+  /// Per robot and reason ("<id> blocked", "<id> off path"): its last automatic re-plan. A robot
+  /// re-planned while BLOCKED may leave its path right after, and is then planned again at once.
+  std::map<std::string, ros::Time> last_attempt_;
 };
 
 }  // namespace fleet_planner
