@@ -1,5 +1,10 @@
 // fleet_planner_node: loads and checks the configuration, loads the backend plugins, and serves
 // PlanFleet until shutdown. A bad configuration stops it at startup with every problem named.
+#include <cstdlib>
+#ifdef __GLIBC__
+#include <malloc.h>
+#endif
+
 #include <ros/ros.h>
 
 #include "fleet_planner/ros/backend_loader.h"
@@ -7,6 +12,13 @@
 #include "fleet_planner/ros/planner_node.h"
 
 int main(int argc, char** argv) {
+#ifdef __GLIBC__
+  // Blocks of 1 MiB and more (a search's tables) from mmap, and back to the system when freed.
+  // Without a fixed threshold glibc raises it to the largest block freed so far, and later
+  // tables of that size come from the threads' arenas, where the node, planning and re-planning
+  // for hours, keeps them: its resident memory then stays at several times what it uses.
+  mallopt(M_MMAP_THRESHOLD, 1 << 20);
+#endif
   ros::init(argc, argv, "fleet_planner");
   ros::NodeHandle nh, private_nh("~");
   try {
