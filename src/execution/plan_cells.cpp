@@ -1,6 +1,7 @@
 // The cells a plan's robots occupy during execution; see plan_cells.h.
 #include "fleet_planner/execution/plan_cells.h"
 
+#include <algorithm>
 #include <string>
 
 #include "fleet_planner/runtime/errors.h"
@@ -16,7 +17,8 @@ bool overlap(const PlacedCells& a, const PlacedCells& b) {
   return CellSet::overlap(p, a.at, q, b.at);
 }
 
-PlanCells::PlanCells(const Instance& instance, const Plan& plan, const ActionModel& model) {
+PlanCells::PlanCells(const Instance& instance, const Plan& plan, const ActionModel& model, int from)
+    : from_(std::max(from, 0)) {
   const std::size_t n = instance.robots.size();
   if (plan.paths.size() != n) {
     throw InvalidInput("plan has " + std::to_string(plan.paths.size()) + " paths for " + std::to_string(n) +
@@ -31,9 +33,10 @@ PlanCells::PlanCells(const Instance& instance, const Plan& plan, const ActionMod
     cells_.push_back(std::make_unique<RobotCells>(robot, *footprints_.back(), path));
     if (!cells_.back()->shapeProblem().empty())
       throw InvalidInput(robotLabel(robot) + ": " + cells_.back()->shapeProblem());
-    std::vector<const CellSet*> sweeps;
-    std::vector<bool> moves;
-    for (int t = 0; t + 1 < static_cast<int>(path.size()); ++t) {
+    const int steps = static_cast<int>(path.size()) - 1;
+    std::vector<const CellSet*> sweeps(std::min(from_, std::max(steps, 0)), nullptr);
+    std::vector<bool> moves(sweeps.size(), false);
+    for (int t = static_cast<int>(sweeps.size()); t < steps; ++t) {
       const auto action = cells_.back()->actionAt(t, model);
       const CellSet* sweep = cells_.back()->sweepAt(t, model);
       if (!action || sweep == nullptr) {

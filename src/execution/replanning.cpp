@@ -287,6 +287,8 @@ class Replanner {
   const Plan& plan() const { return plan_; }
   const Instance& instance() const { return instance_; }
   const std::vector<int>& progress() const { return progress_; }
+  /// The states every robot has reached: what comes before is the past, not checked again.
+  int done() const { return *std::min_element(progress_.begin(), progress_.end()); }
   bool anyMoved() const { return !moved_.empty(); }
   int startTime() const { return start_time_; }
   const ActionModel& model() const { return model_; }
@@ -340,7 +342,8 @@ ReplanResult replanRobots(const ReplanRequest& request) {
     same.status = SolveStatus::Success;
     same.plan = *request.plan;
     same.instance = *request.instance;
-    same.dependencies = buildStepDependencies(*request.instance, same.plan, request.graphs->graph(0).actionModel());
+    same.dependencies = buildStepDependencies(*request.instance, same.plan, request.graphs->graph(0).actionModel(),
+                                              *std::min_element(request.progress.begin(), request.progress.end()));
     same.progress = request.progress;
     return finish(std::move(same));
   }
@@ -359,7 +362,7 @@ ReplanResult replanRobots(const ReplanRequest& request) {
     lap("assemble");
     if (!assembled) return finish(failure(SolveStatus::Infeasible, problem));
     const ValidationResult check =
-        validatePlanChanges(*request.map, replanner.instance(), replanner.plan(), replanner.model(), robots);
+        validatePlanChanges(*request.map, replanner.instance(), replanner.plan(), replanner.model(), robots, replanner.done());
     lap("validate");
     if (!check.valid() && replanner.anyMoved()) {
       // A moved robot's rest where it stands is no searched step: some robot must pass there first.
@@ -370,7 +373,7 @@ ReplanResult replanRobots(const ReplanRequest& request) {
                             "internal error: the re-planned plan fails validation: " + check.violation.message + " (new paths from step " + std::to_string(replanner.startTime()) + ")"));
     }
     ReplanResult out;
-    out.dependencies = buildStepDependencies(replanner.instance(), replanner.plan(), replanner.model());
+    out.dependencies = buildStepDependencies(replanner.instance(), replanner.plan(), replanner.model(), replanner.done());
     lap("dependencies");
     const std::string kept = replanner.releasesKept(out.dependencies);
     lap("releases");

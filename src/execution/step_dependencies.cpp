@@ -19,7 +19,7 @@ struct Stretch {
 std::vector<Stretch> stretchesOf(const PlanCells& cells, int robot) {
   std::vector<Stretch> out;
   const int end = cells.lastState(robot);
-  for (int t = 0; t < end; ++t) {
+  for (int t = std::min(cells.from(), end); t < end; ++t) {
     const PlacedCells c = cells.during(robot, t);
     const bool extends = !out.empty() && !cells.isMove(robot, t) && !cells.isMove(robot, t - 1) &&
                          out.back().cells.cells == c.cells && out.back().cells.at == c.at;
@@ -124,7 +124,13 @@ StepDependencies buildStepDependencies(const PlanCells& cells) {
   std::vector<int> latest(n, -1);        // per query: the last step each robot overlaps
   std::vector<int> touched;
 
-  for (int t = 0; t <= horizon; ++t) {
+  const int from = std::min(cells.from(), horizon);
+  for (int j = 0; j < n; ++j) {  // stretches that end before `from` (only the rest after a path's end can)
+    for (; next[j] < stretches[j].size() && stretches[j][next[j]].first < from; ++next[j]) {
+      history.record(j, stretches[j][next[j]].cells, stretches[j][next[j]].last);
+    }
+  }
+  for (int t = from; t <= horizon; ++t) {
     // The moves at step t look back at steps < t: the history holds exactly those so far.
     for (int i = 0; i < n; ++i) {
       if (t >= cells.lastState(i) || !cells.isMove(i, t)) continue;
@@ -153,8 +159,9 @@ StepDependencies buildStepDependencies(const PlanCells& cells) {
   return deps;
 }
 
-StepDependencies buildStepDependencies(const Instance& instance, const Plan& plan, const ActionModel& model) {
-  return buildStepDependencies(PlanCells(instance, plan, model));
+StepDependencies buildStepDependencies(const Instance& instance, const Plan& plan, const ActionModel& model,
+                                       int from) {
+  return buildStepDependencies(PlanCells(instance, plan, model, from));
 }
 
 }  // namespace fleet_planner

@@ -60,8 +60,8 @@ std::vector<std::pair<int, int>> overlappingBoxes(const std::vector<Box>& boxes)
 class Checker {
  public:
   Checker(const GridMap& map, const Instance& instance, const Plan& plan, const ActionModel& model,
-          std::vector<bool> checked = {})
-      : map_(map), instance_(instance), plan_(plan), model_(model), checked_(std::move(checked)) {
+          std::vector<bool> checked = {}, int from = 0)
+      : map_(map), instance_(instance), plan_(plan), model_(model), checked_(std::move(checked)), from_(from) {
     if (checked_.empty()) checked_.assign(instance.robots.size(), true);
   }
 
@@ -99,17 +99,19 @@ class Checker {
 
     int horizon = 0;
     for (const Path& p : plan_.paths) horizon = std::max(horizon, static_cast<int>(p.size()) - 1);
+    const int first = std::min(from_, horizon);
 
     for (int i = 0; i < n; ++i) {
       if (!checked_[i]) continue;
-      if (!cellsFree(map_, motions_[i]->bodyAt(0), plan_.paths[i][0]))
-        return fail(Violation::Kind::StateInObstacle, i, -1, 0,
-                    "footprint at " + toString(plan_.paths[i][0]) + " covers a blocked or off-map cell");
+      const GridPose& s = stateAt(plan_.paths[i], first);
+      if (!cellsFree(map_, motions_[i]->bodyAt(first), s))
+        return fail(Violation::Kind::StateInObstacle, i, -1, first,
+                    "footprint at " + toString(s) + " covers a blocked or off-map cell");
     }
-    if (Violation v = vertexConflicts(0); v.kind != Violation::Kind::None) return v;
+    if (Violation v = vertexConflicts(first); v.kind != Violation::Kind::None) return v;
 
     std::vector<const CellSet*> sweeps(n);
-    for (int t = 0; t < horizon; ++t) {
+    for (int t = first; t < horizon; ++t) {
       for (int i = 0; i < n; ++i) {
         sweeps[i] = motions_[i]->sweepAt(t, model_);
         if (!checked_[i]) continue;
@@ -191,6 +193,7 @@ class Checker {
   const Plan& plan_;
   const ActionModel& model_;
   std::vector<bool> checked_;  ///< robots whose paths and conflicts are checked
+  int from_ = 0;               ///< the first state checked
   std::vector<std::unique_ptr<FootprintCells>> cells_;
   std::vector<std::unique_ptr<RobotCells>> motions_;
 };
@@ -203,12 +206,12 @@ ValidationResult validatePlan(const GridMap& map, const Instance& instance, cons
 }
 
 ValidationResult validatePlanChanges(const GridMap& map, const Instance& instance, const Plan& plan,
-                                     const ActionModel& model, const std::vector<int>& changed) {
+                                     const ActionModel& model, const std::vector<int>& changed, int from) {
   std::vector<bool> checked(instance.robots.size(), false);
   for (int r : changed) {
     if (r >= 0 && r < static_cast<int>(checked.size())) checked[r] = true;
   }
-  return {Checker(map, instance, plan, model, std::move(checked)).run()};
+  return {Checker(map, instance, plan, model, std::move(checked), std::max(from, 0)).run()};
 }
 
 const char* violationName(Violation::Kind kind) {

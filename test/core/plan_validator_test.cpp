@@ -54,6 +54,9 @@ TEST(PlanValidator, ChangesAreCheckedAgainstEveryoneAndOnlyThey) {
   EXPECT_FALSE(validatePlan(map, instance, plan).valid());
   EXPECT_TRUE(validatePlanChanges(map, instance, plan, {}, {2}).valid());  // c meets nobody
   EXPECT_EQ(validatePlanChanges(map, instance, plan, {}, {1}).violation.kind, Kind::VertexConflict);
+  // Before `from` nothing is checked: a and b meet at t = 2, the past from t = 3 on.
+  EXPECT_TRUE(validatePlanChanges(map, instance, plan, {}, {1}, 3).valid());
+  EXPECT_EQ(validatePlanChanges(map, instance, plan, {}, {1}, 2).violation.kind, Kind::VertexConflict);
   // c's new path ends where a arrives at t = 3: found although a is unchanged.
   plan.paths[2] = {{0, 1, 0}, {1, 1, 0}, {2, 1, 0}, {3, 1, 0}, {3, 1, 3}, {3, 0, 3}};
   instance.robots[2].target = {3, 0, 3};

@@ -9,6 +9,7 @@
 #include <iostream>
 
 #include "execution_worlds.h"
+#include "fleet_planner/execution/execution_tracker.h"
 
 namespace fleet_planner::test {
 namespace {
@@ -94,6 +95,36 @@ TEST(StepDependencies, SameListsAsTheRuleWrittenDirectlyOnRandomPlans) {
     EXPECT_EQ(buildStepDependencies(cells).before, deps.before) << w.name << ": not deterministic";
   }
   EXPECT_EQ(testWorlds().size(), 17u);
+}
+
+// From a state every robot has reached, the steps before it are not looked at: every execution
+// tracked from there is released exactly as with the whole plan's dependencies.
+TEST(StepDependencies, FromAStateEveryRobotHasReachedTheReleasesAreTheSame) {
+  Rng rng(11);
+  int compared = 0;
+  for (const PlannedWorld& w : testWorlds()) {
+    const PlanCells cells(w.instance, w.plan, w.model);
+    const StepDependencies whole = buildStepDependencies(cells);
+    int horizon = 0;
+    for (int i = 0; i < cells.robots(); ++i) horizon = std::max(horizon, cells.lastState(i));
+    for (int from : {1, horizon / 3, horizon / 2}) {
+      const StepDependencies window = buildStepDependencies(PlanCells(w.instance, w.plan, w.model, from));
+      EXPECT_LE(window.count(), whole.count()) << w.name;
+      for (int trial = 0; trial < 20; ++trial) {
+        std::vector<int> progress;
+        for (int i = 0; i < cells.robots(); ++i) {
+          const int last = cells.lastState(i);
+          progress.push_back(static_cast<int>(rng.uniformInt(std::min(from, last), last)));
+        }
+        const ExecutionTracker a(w.plan, whole, progress), b(w.plan, window, progress);
+        for (int i = 0; i < cells.robots(); ++i) {
+          EXPECT_EQ(a.releasedUpTo(i), b.releasedUpTo(i)) << w.name << " from " << from << " robot " << i;
+        }
+        ++compared;
+      }
+    }
+  }
+  EXPECT_EQ(compared, 17 * 3 * 20);
 }
 
 // Random walks of many robots of mixed sizes on one open area: not a valid plan (robots cross

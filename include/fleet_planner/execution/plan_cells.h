@@ -30,7 +30,11 @@ class PlanCells {
   /// `instance` and `plan` must outlive this object. Throws InvalidInput when the plan does not
   /// have one non-empty path per robot, or a path has a step that is no legal motion under
   /// `model` or not the shape its start or target yaw needs (what validatePlan reports as such).
-  PlanCells(const Instance& instance, const Plan& plan, const ActionModel& model = {});
+  /// Steps before `from` (every robot has done them, during an execution) are not looked at:
+  /// during() and isMove() must not be asked about them.
+  PlanCells(const Instance& instance, const Plan& plan, const ActionModel& model = {}, int from = 0);
+  /// The first step looked at.
+  int from() const { return from_; }
 
   int robots() const { return static_cast<int>(paths_.size()); }
   const Path& path(int robot) const { return *paths_[robot]; }
@@ -49,6 +53,7 @@ class PlanCells {
   std::vector<std::unique_ptr<RobotCells>> cells_;
   std::vector<std::vector<const CellSet*>> sweeps_;  ///< [robot][t], t < lastState
   std::vector<std::vector<bool>> moves_;             ///< [robot][t], t < lastState
+  int from_ = 0;
 };
 
 }  // namespace fleet_planner

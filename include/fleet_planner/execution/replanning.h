@@ -12,7 +12,9 @@
 /// on, so that the new plan is a valid plan (the validator checks it whole), and the dependencies
 /// built from it (step_dependencies.h) order every pair of steps by that one clock: no cycle, so
 /// no deadlock, and no collision at any timing, as for a fresh plan. Steps robots have done only
-/// carry requirements that are met.
+/// carry requirements that are met: the steps every robot has done are neither validated nor
+/// looked at for dependencies again (from the smallest progress on), so that a re-plan's checks
+/// do not grow with the plan's history (live goals lengthen it without end).
 ///
 /// What is already released stays released. A robot may be anywhere on the steps it has been
 /// released to (an executing robot drives them without asking again), so the search takes their

@@ -71,11 +71,16 @@ struct StepDependencies {
   std::size_t count() const;
 };
 
-/// The dependencies of `cells` (a valid plan's, see above). Deterministic.
+/// The dependencies of `cells` (a valid plan's, see above). Deterministic. With cells.from() > 0
+/// (every robot has reached that state), steps before it need nothing and what they covered is
+/// not looked at: what it drops are requirements every robot already meets, so an execution
+/// tracked from states >= from is released exactly as with the whole plan's dependencies, at a
+/// cost that does not grow with the plan's history.
 StepDependencies buildStepDependencies(const PlanCells& cells);
 
-/// Same, building the cells of `plan` for `instance` under `model` (the plan's lattice step).
-/// Throws InvalidInput like PlanCells.
-StepDependencies buildStepDependencies(const Instance& instance, const Plan& plan, const ActionModel& model = {});
+/// Same, building the cells of `plan` for `instance` under `model` (the plan's lattice step),
+/// from step `from`. Throws InvalidInput like PlanCells.
+StepDependencies buildStepDependencies(const Instance& instance, const Plan& plan, const ActionModel& model = {},
+                                       int from = 0);
 
 }  // namespace fleet_planner

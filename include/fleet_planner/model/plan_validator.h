@@ -51,9 +51,10 @@ ValidationResult validatePlan(const GridMap& map, const Instance& instance, cons
 /// Same, for a plan in which only the robots `changed` differ from one already valid (same map,
 /// model, and the other robots' paths and Robots): only their paths, and only the conflicts that
 /// involve one of them, are checked. A revision during the execution (execution/replanning.h)
-/// is checked this way: every other pair is as it was.
+/// is checked this way: every other pair is as it was. States and steps before `from` (done by
+/// every robot) are not checked at all.
 ValidationResult validatePlanChanges(const GridMap& map, const Instance& instance, const Plan& plan,
-                                     const ActionModel& model, const std::vector<int>& changed);
+                                     const ActionModel& model, const std::vector<int>& changed, int from = 0);
 
 /// "vertex conflict", "transfer conflict", ... (lower case, for messages).
 const char* violationName(Violation::Kind kind);
