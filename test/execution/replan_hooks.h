@@ -13,6 +13,24 @@
 
 namespace fleet_planner::test {
 
+/// A test world ready to execute: its graphs, and its plan's cells and dependencies.
+struct ExecutableWorld {
+  explicit ExecutableWorld(const PlannedWorld& w)
+      : graphs(graphsOf(w)), cells(w.instance, w.plan, w.model), deps(buildStepDependencies(cells)) {}
+  FleetGraphs graphs;
+  PlanCells cells;
+  StepDependencies deps;
+};
+
+/// Runs `run(world, executable, seed)` for every test world and seeds 0 .. seeds - 1.
+template <class Run>
+void forEachWorldAndSeed(std::uint64_t seeds, Run run) {
+  for (const PlannedWorld& w : testWorlds()) {
+    const ExecutableWorld x(w);
+    for (std::uint64_t seed = 0; seed < seeds; ++seed) run(w, x, seed);
+  }
+}
+
 /// A request (nothing to plan yet) for `plan` of `instance` in `world`, at the progress and
 /// releases `tracker` gives, with 5 s to plan.
 inline ReplanRequest requestFrom(const PlannedWorld& world, const FleetGraphs& graphs, const Instance& instance,

@@ -87,26 +87,21 @@ struct Pusher {
 TEST(Replanning, ARobotPushedOffItsPathIsPlannedFromWhereItStands) {
   int runs = 0, made = 0;
   std::map<std::string, int> refused;
-  for (const PlannedWorld& w : testWorlds()) {
-    const FleetGraphs graphs = graphsOf(w);
-    const PlanCells cells(w.instance, w.plan, w.model);
-    const StepDependencies deps = buildStepDependencies(cells);
-    for (std::uint64_t seed = 0; seed < 6; ++seed) {
-      Pusher pusher;
-      pusher.world = &w;
-      pusher.graphs = &graphs;
-      pusher.seed = seed;
-      pusher.pushed = static_cast<int>(seed % cells.robots());
-      DelayModel delays;
-      delays.slowdown = 1.0;
-      const SimulationResult r = simulateExecution(cells, &deps, delays, seed, {}, std::ref(pusher));
-      ASSERT_EQ(r.outcome, SimulationResult::Outcome::Completed) << w.name << " seed " << seed << ": " << r.message;
-      for (const std::string& f : pusher.failures) ADD_FAILURE() << f;
-      made += pusher.made;
-      for (const auto& [status, count] : pusher.refused) refused[status] += count;
-      ++runs;
-    }
-  }
+  forEachWorldAndSeed(6, [&](const PlannedWorld& w, const ExecutableWorld& x, std::uint64_t seed) {
+    Pusher pusher;
+    pusher.world = &w;
+    pusher.graphs = &x.graphs;
+    pusher.seed = seed;
+    pusher.pushed = static_cast<int>(seed % x.cells.robots());
+    DelayModel delays;
+    delays.slowdown = 1.0;
+    const SimulationResult r = simulateExecution(x.cells, &x.deps, delays, seed, {}, std::ref(pusher));
+    ASSERT_EQ(r.outcome, SimulationResult::Outcome::Completed) << w.name << " seed " << seed << ": " << r.message;
+    for (const std::string& f : pusher.failures) ADD_FAILURE() << f;
+    made += pusher.made;
+    for (const auto& [status, count] : pusher.refused) refused[status] += count;
+    ++runs;
+  });
   std::cout << runs << " runs, " << made << " pushed robots planned again; refused:";
   for (const auto& [status, count] : refused) std::cout << " " << status << " " << count;
   std::cout << "\n";

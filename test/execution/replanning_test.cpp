@@ -99,33 +99,28 @@ struct BlockedReplanner {
 TEST(Replanning, RobotsWaitingForAStoppedOneArePlannedAroundItAndEverybodyArrivesSafely) {
   int runs = 0, replans = 0, attempts = 0, bypassed = 0;
   std::map<std::string, int> refused;
-  for (const PlannedWorld& w : testWorlds()) {
-    const FleetGraphs graphs = graphsOf(w);
-    const PlanCells cells(w.instance, w.plan, w.model);
-    const StepDependencies deps = buildStepDependencies(cells);
-    const int n = cells.robots();
-    for (std::uint64_t seed = 0; seed < 6; ++seed) {
-      const int stopped = static_cast<int>(seed % n);
-      BlockedReplanner replanner;
-      replanner.world = &w;
-      replanner.graphs = &graphs;
-      replanner.stopped = stopped;
-      replanner.seed = seed;
-      DelayModel delays;
-      delays.slowdown = 1.0;
-      delays.stop_probability = 0.05;
-      const std::vector<Hold> holds = {{stopped, 1.5, kForever}};
-      const SimulationResult r = simulateExecution(cells, &deps, delays, seed, holds, std::ref(replanner));
-      ASSERT_EQ(r.outcome, SimulationResult::Outcome::Completed) << w.name << " seed " << seed << ": " << r.message;
-      for (const std::string& f : replanner.failures) ADD_FAILURE() << f;
-      replans += replanner.successes;
-      for (const auto& [status, count] : replanner.refused) refused[status] += count;
-      // Robots that arrived while the stopped one still stood: none of them waited for it.
-      for (int i = 0; i < n; ++i) bypassed += i != stopped && replanner.successes > 0 && r.arrivals[i] < kForever;
-      attempts += replanner.attempts;
-      ++runs;
-    }
-  }
+  forEachWorldAndSeed(6, [&](const PlannedWorld& w, const ExecutableWorld& x, std::uint64_t seed) {
+    const int n = x.cells.robots();
+    const int stopped = static_cast<int>(seed % n);
+    BlockedReplanner replanner;
+    replanner.world = &w;
+    replanner.graphs = &x.graphs;
+    replanner.stopped = stopped;
+    replanner.seed = seed;
+    DelayModel delays;
+    delays.slowdown = 1.0;
+    delays.stop_probability = 0.05;
+    const std::vector<Hold> holds = {{stopped, 1.5, kForever}};
+    const SimulationResult r = simulateExecution(x.cells, &x.deps, delays, seed, holds, std::ref(replanner));
+    ASSERT_EQ(r.outcome, SimulationResult::Outcome::Completed) << w.name << " seed " << seed << ": " << r.message;
+    for (const std::string& f : replanner.failures) ADD_FAILURE() << f;
+    replans += replanner.successes;
+    for (const auto& [status, count] : replanner.refused) refused[status] += count;
+    // Robots that arrived while the stopped one still stood: none of them waited for it.
+    for (int i = 0; i < n; ++i) bypassed += i != stopped && replanner.successes > 0 && r.arrivals[i] < kForever;
+    attempts += replanner.attempts;
+    ++runs;
+  });
   std::cout << runs << " runs, " << attempts << " re-plans asked, " << replans << " made; refused:";
   for (const auto& [status, count] : refused) std::cout << " " << status << " " << count;
   std::cout << "\n";
@@ -235,23 +230,18 @@ struct GoalGiver {
 
 TEST(Replanning, RobotsThatArriveGetNewGoalsWhileTheOthersDrive) {
   int runs = 0, asked = 0, made = 0;
-  for (const PlannedWorld& w : testWorlds()) {
-    const FleetGraphs graphs = graphsOf(w);
-    const PlanCells cells(w.instance, w.plan, w.model);
-    const StepDependencies deps = buildStepDependencies(cells);
-    for (std::uint64_t seed = 0; seed < 4; ++seed) {
-      GoalGiver giver;
-      giver.world = &w;
-      giver.graphs = &graphs;
-      giver.seed = seed;
-      const SimulationResult r = simulateExecution(cells, &deps, DelayModel{}, seed, {}, std::ref(giver));
-      ASSERT_EQ(r.outcome, SimulationResult::Outcome::Completed) << w.name << " seed " << seed << ": " << r.message;
-      for (const std::string& f : giver.failures) ADD_FAILURE() << f;
-      asked += giver.asked;
-      made += giver.made;
-      ++runs;
-    }
-  }
+  forEachWorldAndSeed(4, [&](const PlannedWorld& w, const ExecutableWorld& x, std::uint64_t seed) {
+    GoalGiver giver;
+    giver.world = &w;
+    giver.graphs = &x.graphs;
+    giver.seed = seed;
+    const SimulationResult r = simulateExecution(x.cells, &x.deps, DelayModel{}, seed, {}, std::ref(giver));
+    ASSERT_EQ(r.outcome, SimulationResult::Outcome::Completed) << w.name << " seed " << seed << ": " << r.message;
+    for (const std::string& f : giver.failures) ADD_FAILURE() << f;
+    asked += giver.asked;
+    made += giver.made;
+    ++runs;
+  });
   std::cout << runs << " runs, " << asked << " new goals asked, " << made << " planned\n";
   EXPECT_GE(made, asked / 3);
 }
