@@ -3,7 +3,7 @@
 
 Usage (through scripts/fleet_soak): --map MAP.yaml --fleet FLEET.yaml --robots N --rounds R
     --seed S --slowdown F --stops K [--stop-seconds 2] [--blocked-timeout 10] [--no-replan]
-    [--seconds-per-step 0.1] [--time-limit 30] [--round-timeout 600] [--uncoordinated]
+    [--drifts 0] [--seconds-per-step 0.1] [--time-limit 30] [--round-timeout 600] [--uncoordinated]
     [--live-goals] [--json-out FILE]
 
 The fleet: N robots named <fleet id>_<k>, taking the fleet file's footprints in turn. They start
@@ -11,9 +11,10 @@ at random free poses (fleet_planner.pose_sampling). Each round draws a new goal 
 (a random free pose at a random yaw that the robot can reach alone from where it stands), plans
 the whole fleet from TF (start_from_tf) and waits until the execution reports every robot
 arrived. The fleet simulator makes each step up to F slower and holds K random robots for
---stop-seconds during each plan. The planner re-plans a robot BLOCKED (waiting longer than
---blocked-timeout) around the robot it waits for (replan_blocked; --no-replan turns it off). A
-plan that fails gets new goals (up to 3 draws per round).
+--stop-seconds during each plan, and --drifts random robots drift up to 0.4 m off their paths
+for 6 s (the planner re-plans them from where they stand). The planner re-plans a robot BLOCKED
+(waiting longer than --blocked-timeout) around the robot it waits for (replan_blocked;
+--no-replan turns it off). A plan that fails gets new goals (up to 3 draws per round).
 
 With --live-goals there is one plan, of every robot's first goal; then each robot, as soon as it
 arrives, gets its next goal through the planner's ~add_tasks while the others drive, until every
@@ -95,6 +96,8 @@ def launch_xml(args, folder):
     <param name="rate" value="50"/>
     <param name="slowdown" value="{slowdown}"/>
     <param name="stops_per_plan" value="{stops}"/>
+    <param name="drifts_per_plan" value="{drifts}"/>
+    <param name="drift_offset" value="0.4"/>
     <param name="stop_probability" value="{stop_probability}"/>
     <param name="stop_seconds" value="{stop_seconds}"/>
     <param name="seed" value="{seed}"/>
@@ -105,6 +108,7 @@ def launch_xml(args, folder):
 </launch>
 """.format(map=os.path.abspath(args.map), folder=folder, sps=args.seconds_per_step, slowdown=args.slowdown,
            stops=0 if args.live_goals else args.stops, stop_seconds=args.stop_seconds, seed=args.seed,
+           drifts=0 if args.live_goals else args.drifts,
            stop_probability=args.stops / (100.0 * args.robots) if args.live_goals else 0.0,
            uncoordinated="true" if args.uncoordinated else "false", blocked_timeout=args.blocked_timeout,
            replan="false" if args.no_replan else "true")
@@ -221,6 +225,7 @@ def main(argv=None):
     p.add_argument("--blocked-timeout", type=float, default=10.0,
                    help="seconds of waiting before a robot is BLOCKED, and re-planned")
     p.add_argument("--no-replan", action="store_true", help="the planner does not re-plan BLOCKED robots")
+    p.add_argument("--drifts", type=int, default=0, help="robots drifting off their paths in each round")
     p.add_argument("--live-goals", action="store_true",
                    help="one plan, then each robot gets its next goal (of --rounds) through ~add_tasks as soon "
                         "as it arrives, while the others drive")

@@ -89,6 +89,7 @@ class FleetSimulation:
         self.stops = 0  # random stops so far
         self.clock = 0.0
         self.scheduled = []  # (time, robot id, seconds): stops to come, by time
+        self.drifts = []     # (time, robot id, seconds, offset): drifts to come, by time
 
     def add(self, robot_id, pose):
         self.robots[robot_id] = SimulatedRobot(robot_id, pose)
@@ -135,12 +136,23 @@ class FleetSimulation:
             self.scheduled.append((self.clock + self.rng.uniform(0.0, within), self.rng.choice(ids), seconds))
         self.scheduled.sort()
 
+    def schedule_drifts(self, count, within, seconds, offset):
+        """`count` drifts (start_drift) of a random robot each, at random times in the next
+        `within` seconds (a localisation or controller fault)."""
+        ids = sorted(self.robots)
+        for _ in range(count if ids else 0):
+            self.drifts.append((self.clock + self.rng.uniform(0.0, within), self.rng.choice(ids), seconds, offset))
+        self.drifts.sort()
+
     def advance(self, dt):
         self.clock += dt
         while self.scheduled and self.scheduled[0][0] <= self.clock:
             _, robot_id, seconds = self.scheduled.pop(0)
             self.hold(robot_id, seconds)
             self.stops += 1
+        while self.drifts and self.drifts[0][0] <= self.clock:
+            _, robot_id, seconds, offset = self.drifts.pop(0)
+            self.start_drift(robot_id, seconds, offset)
         for robot_id in sorted(self.robots):
             robot = self.robots[robot_id]
             self._advance(robot, dt)

@@ -29,6 +29,22 @@ class Drifts(unittest.TestCase):
         self.assertEqual(sim.robots["a"].offset_pose(), LINE[0])
 
 
+    def test_scheduled_drifts_start_within_the_horizon_and_are_seeded(self):
+        def drifted(seed):
+            sim = FleetSimulation(1.0, seed=seed)
+            sim.follow({"a": LINE, "b": [(5.0, 5.0, 0.0)]})
+            sim.schedule_drifts(3, 4.0, 2.0, 0.3)
+            starts = []
+            for k in range(100):
+                sim.advance(0.05)
+                starts += [(k, r) for r, robot in sorted(sim.robots.items()) if robot.drift and robot.drift[0] == 0.05]
+            return starts, sim.drifts
+        starts, left = drifted(7)
+        self.assertEqual(left, [])
+        self.assertTrue(starts and all(k * 0.05 <= 4.0 for k, _ in starts))
+        self.assertEqual(drifted(7)[0], starts)
+
+
 class FollowsRevisions(unittest.TestCase):
     def test_a_revised_robot_keeps_its_place_and_drives_its_new_states(self):
         sim = FleetSimulation(1.0)
