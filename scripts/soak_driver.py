@@ -29,7 +29,8 @@ planner's monitor), goals_reached, goals_total, deadlocks (rounds not finished w
 --round-timeout), replans (plans made), plan_failures, replan_p50_s and replan_p95_s (plan call
 latency), execution_replans and execution_replans_refused (robots re-planned during the execution,
 and re-plans that found nothing safe), execution_replan_p50_s and execution_replan_p95_s (their
-latency, merged or refused), rss_mb_first (the planner's resident memory after the first round), rss_mb_last,
+latency, merged or refused), execution_off_path_replans and execution_off_path_refused (those of
+robots off their paths, merged and refused), rss_mb_first (the planner's resident memory after the first round), rss_mb_last,
 rss_growth (last / first - 1), rounds_done (fewer than --rounds when interrupted: Ctrl-C ends
 the soak with the summary of the rounds done), wall_s. Exit status 1 on a collision or a deadlock.
 """
@@ -56,62 +57,8 @@ from fleet_planner.msg import FleetExecution, RobotExecution, RobotTask
 from fleet_planner.pose_sampling import PoseSampler
 from fleet_planner.srv import AddTasks, AddTasksRequest, AddTasksResponse, PlanFleet, PlanFleetRequest, \
     PlanFleetResponse
+from soak_files import fleet_yaml, launch_xml, tasks_yaml
 
-
-
-def fleet_yaml(robots):
-    """A fleet file for (id, footprint) pairs (padding already applied)."""
-    lines = ["robots:"]
-    for robot_id, f in robots:
-        lines.append("  - id: %s" % robot_id)
-        if f.kind == "circle":
-            lines.append("    robot_radius: %.6f" % f.radius)
-        elif f.kind == "block":
-            lines.append("    block: {min_x: %.6f, max_x: %.6f, min_y: %.6f, max_y: %.6f}"
-                         % (f.min_x, f.max_x, f.min_y, f.max_y))
-        else:
-            lines.append("    footprint: [%s]" % ", ".join("[%.6f, %.6f]" % p for p in f.points))
-    return "\n".join(lines) + "\n"
-
-
-def tasks_yaml(poses):
-    lines = ["tasks:"]
-    for robot_id, (x, y, yaw) in poses:
-        lines += ["  - id: %s" % robot_id, "    start: [%.6f, %.6f, %.6f]" % (x, y, yaw),
-                  "    goal: [%.6f, %.6f, %.6f]" % (x, y, yaw)]
-    return "\n".join(lines) + "\n"
-
-
-def launch_xml(args, folder):
-    return """<launch>
-  <node pkg="fleet_planner" type="map_server" name="map_server" args="{map}"/>
-  <node pkg="fleet_planner" type="footprint_registry" name="footprint_registry" args="{folder}/fleet.yaml"/>
-  <include file="$(find fleet_planner)/launch/planner.launch">
-    <arg name="execute" value="true"/>
-    <arg name="seconds_per_step" value="{sps}"/>
-    <arg name="output" value="log"/>
-  </include>
-  <node pkg="fleet_planner" type="fleet_simulator" name="fleet_simulator">
-    <param name="tasks_file" value="{folder}/starts.yaml"/>
-    <param name="rate" value="50"/>
-    <param name="slowdown" value="{slowdown}"/>
-    <param name="stops_per_plan" value="{stops}"/>
-    <param name="drifts_per_plan" value="{drifts}"/>
-    <param name="drift_offset" value="0.4"/>
-    <param name="stop_probability" value="{stop_probability}"/>
-    <param name="stop_seconds" value="{stop_seconds}"/>
-    <param name="seed" value="{seed}"/>
-    <param name="uncoordinated" value="{uncoordinated}"/>
-  </node>
-  <param name="/fleet_planner/blocked_timeout" value="{blocked_timeout}"/>
-  <param name="/fleet_planner/replan_blocked" value="{replan}"/>
-</launch>
-""".format(map=os.path.abspath(args.map), folder=folder, sps=args.seconds_per_step, slowdown=args.slowdown,
-           stops=0 if args.live_goals else args.stops, stop_seconds=args.stop_seconds, seed=args.seed,
-           drifts=0 if args.live_goals else args.drifts,
-           stop_probability=args.stops / (100.0 * args.robots) if args.live_goals else 0.0,
-           uncoordinated="true" if args.uncoordinated else "false", blocked_timeout=args.blocked_timeout,
-           replan="false" if args.no_replan else "true")
 
 
 def rss_mb(node):
@@ -149,6 +96,7 @@ class Soak:
         self.lock = threading.Lock()
         self.execution_replan_times = []  # seconds of each re-plan during the executions
         self.seen_replans = (0, 0, 0)     # (plan, replans, refused) at the last message
+        self.off_path = [0, 0]            # re-plans of robots off their paths: merged, refused
 
     def draw_starts(self):
         taken, poses = [], []
@@ -191,6 +139,8 @@ class Soak:
                 replans, refused = 0, 0
             if msg.replans + msg.replans_refused > replans + refused:
                 self.execution_replan_times.append(msg.last_replan_time)
+                if "(off its path)" in msg.last_replan:
+                    self.off_path[0 if msg.replans > replans else 1] += 1
             self.seen_replans = (msg.plan, msg.replans, msg.replans_refused)
 
     def current(self, tf):
@@ -295,6 +245,7 @@ def run(soak, args, started):
                   replan_p50_s=percentile(latencies, 0.5), replan_p95_s=percentile(latencies, 0.95),
                   execution_replan_p50_s=percentile(soak.execution_replan_times, 0.5),
                   execution_replan_p95_s=percentile(soak.execution_replan_times, 0.95),
+                  execution_off_path_replans=soak.off_path[0], execution_off_path_refused=soak.off_path[1],
                   rss_mb_first=rss_first, rss_mb_last=rss_last,
                   rss_growth=(rss_last / rss_first - 1.0) if rss_first and rss_last else None,
                   wall_s=time.monotonic() - started)

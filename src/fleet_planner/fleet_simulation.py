@@ -138,7 +138,8 @@ class FleetSimulation:
 
     def schedule_drifts(self, count, within, seconds, offset):
         """`count` drifts (start_drift) of a random robot each, at random times in the next
-        `within` seconds (a localisation or controller fault)."""
+        `within` seconds (a localisation or controller fault while it drives: a robot that has
+        arrived by then does not drift)."""
         ids = sorted(self.robots)
         for _ in range(count if ids else 0):
             self.drifts.append((self.clock + self.rng.uniform(0.0, within), self.rng.choice(ids), seconds, offset))
@@ -152,7 +153,8 @@ class FleetSimulation:
             self.stops += 1
         while self.drifts and self.drifts[0][0] <= self.clock:
             _, robot_id, seconds, offset = self.drifts.pop(0)
-            self.start_drift(robot_id, seconds, offset)
+            if not self.robots[robot_id].arrived():
+                self.start_drift(robot_id, seconds, offset)
         for robot_id in sorted(self.robots):
             robot = self.robots[robot_id]
             self._advance(robot, dt)

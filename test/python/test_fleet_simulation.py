@@ -33,7 +33,7 @@ class Drifts(unittest.TestCase):
         def drifted(seed):
             sim = FleetSimulation(1.0, seed=seed)
             sim.follow({"a": LINE, "b": [(5.0, 5.0, 0.0)]})
-            sim.schedule_drifts(3, 4.0, 2.0, 0.3)
+            sim.schedule_drifts(10, 4.0, 2.0, 0.3)
             starts = []
             for k in range(100):
                 sim.advance(0.05)
@@ -42,6 +42,7 @@ class Drifts(unittest.TestCase):
         starts, left = drifted(7)
         self.assertEqual(left, [])
         self.assertTrue(starts and all(k * 0.05 <= 4.0 for k, _ in starts))
+        self.assertEqual({r for _, r in starts}, {"a"})  # b has arrived (a plan of one state): it does not drift
         self.assertEqual(drifted(7)[0], starts)
 
 
