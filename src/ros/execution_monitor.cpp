@@ -64,21 +64,17 @@ void ExecutionMonitor::start(ExecutablePlan plan, double seconds_per_step, const
   seconds_per_step_ = seconds_per_step;
 }
 
-std::vector<int> ExecutionMonitor::blockedRobots() const {
+std::vector<int> ExecutionMonitor::robotsIn(std::uint8_t state) const {
   std::vector<int> out;
   for (std::size_t i = 0; i < message_.robots.size(); ++i) {
-    if (message_.robots[i].state == RobotExecutionMsg::BLOCKED) out.push_back(static_cast<int>(i));
+    if (message_.robots[i].state == state) out.push_back(static_cast<int>(i));
   }
   return out;
 }
 
-std::vector<int> ExecutionMonitor::offPathRobots() const {
-  std::vector<int> out;
-  for (std::size_t i = 0; i < message_.robots.size(); ++i) {
-    if (message_.robots[i].state == RobotExecutionMsg::OFF_PATH) out.push_back(static_cast<int>(i));
-  }
-  return out;
-}
+std::vector<int> ExecutionMonitor::blockedRobots() const { return robotsIn(RobotExecutionMsg::BLOCKED); }
+
+std::vector<int> ExecutionMonitor::offPathRobots() const { return robotsIn(RobotExecutionMsg::OFF_PATH); }
 
 ReplanReport ExecutionMonitor::replan(const std::vector<int>& robots, double time_limit, const PoseTolerance& tolerance) {
   ReplanRequest rq;
@@ -218,7 +214,10 @@ const PlanCells& ExecutionMonitor::planCells() {
   if (!cells_) {
     ActionModel model;
     model.step = plan_.lattice_step;
-    cells_ = std::make_unique<PlanCells>(plan_.instance, plan_.plan, model);
+    // Only the steps from the smallest progress on are asked about (progress only grows).
+    int done = tracker_->progress(0);
+    for (int i = 1; i < tracker_->robots(); ++i) done = std::min(done, tracker_->progress(i));
+    cells_ = std::make_unique<PlanCells>(plan_.instance, plan_.plan, model, done);
   }
   return *cells_;
 }

@@ -9,6 +9,7 @@
 /// never moved on: a robot that falls behind holds those that must wait for it, nobody else.
 /// A robot OFF_PATH stands where its plan does not know it: nobody is released into a step that
 /// covers its footprint where it stands (what was released already stays released).
+#include <cstdint>
 #include <map>
 #include <memory>
 #include <optional>
@@ -100,9 +101,12 @@ class ExecutionMonitor {
   int released(int robot) const;
   /// Pairs of robots (i < j) whose footprints at their poses share a map cell.
   std::set<std::pair<int, int>> overlaps(const std::vector<std::optional<geometry_msgs::Pose2D>>& poses) const;
+  /// Robots in RobotExecution state `state` at the last update (plan order).
+  std::vector<int> robotsIn(std::uint8_t state) const;
   /// The map cells robot i's footprint covers at `pose`: a set relative to a cell.
   std::pair<Cell, CellSet> footprintAt(int robot, const geometry_msgs::Pose2D& pose) const;
-  /// The running plan's cells (built when first needed after a start or a merge).
+  /// The running plan's cells from the smallest progress on (built when first needed after a
+  /// start or a merge).
   const PlanCells& planCells();
 
   ExecutionSettings settings_;
