@@ -14,6 +14,10 @@ namespace fleet_planner {
 
 namespace {
 
+// A refused automatic re-plan waits up to this many blocked_timeouts before it is tried again
+// with nothing changed (replan_backoff.h).
+constexpr double kMaxBackoff = 4.0;
+
 ExecutionSettings executionSettings(const PlannerConfig& c) {
   ExecutionSettings s;
   s.position_tolerance = c.progress_tolerance;
@@ -24,6 +28,16 @@ ExecutionSettings executionSettings(const PlannerConfig& c) {
   return s;
 }
 
+// What a refused re-plan of robot a depended on: the robot it waits for and that robot's
+// progress (empty when it waits for nobody).
+std::string replanCause(const fleet_planner::FleetExecution& execution, int a) {
+  const std::string& awaited = execution.robots[a].blocked_by;
+  for (const auto& robot : execution.robots) {
+    if (!awaited.empty() && robot.robot_id == awaited) return awaited + "@" + std::to_string(robot.progress);
+  }
+  return awaited;
+}
+
 bool sameRelease(const fleet_planner::RobotExecution& a, const fleet_planner::RobotExecution& b) {
   return a.state == b.state && a.progress == b.progress && a.released == b.released && a.blocked_by == b.blocked_by;
 }
@@ -32,7 +46,11 @@ bool sameRelease(const fleet_planner::RobotExecution& a, const fleet_planner::Ro
 
 ExecutionRunner::ExecutionRunner(ros::NodeHandle nh, ros::NodeHandle private_nh, const PlannerConfig& config,
                                  tf2_ros::Buffer& tf)
-    : config_(config), tf_(tf), private_nh_(private_nh), monitor_(executionSettings(config)) {
+    : config_(config),
+      tf_(tf),
+      private_nh_(private_nh),
+      monitor_(executionSettings(config)),
+      backoff_(config.blocked_timeout, kMaxBackoff * config.blocked_timeout) {
   execution_pub_ = private_nh_.advertise<fleet_planner::FleetExecution>("execution", 1, true);
   diagnostics_pub_ = nh.advertise<diagnostic_msgs::DiagnosticArray>("/diagnostics", 10);
   markers_pub_ = private_nh_.advertise<visualization_msgs::MarkerArray>("execution_markers", 1, true);
@@ -43,7 +61,7 @@ void ExecutionRunner::start(const ExecutablePlan& plan, const ros::Time& plan_st
   std::lock_guard<std::mutex> lock(mutex_);
   monitor_.start(plan, config_.seconds_per_step, config_.map_frame, plan_start);
   last_sent_.clear();
-  last_attempt_.clear();
+  backoff_.clear();
   for (const std::string& id : monitor_.robotIds()) {
     if (!robot_pubs_.count(id)) {
       robot_pubs_.emplace(id, private_nh_.advertise<fleet_planner::RobotExecution>(robotTopicName("execution", id), 1,
@@ -186,9 +204,9 @@ void ExecutionRunner::onTimer(const ros::TimerEvent&) {
     const ros::Time now = ros::Time::now();
     fleet_planner::FleetExecution execution = monitor_.update(poses, now);
     for (const std::string& contact : monitor_.newContacts()) ROS_WARN("fleet_planner: execution: contact: %s", contact.c_str());
-    // Each robot BLOCKED for longer than blocked_timeout or OFF_PATH, at most once per
-    // blocked_timeout, and one re-plan per update: the lock (and the service calls waiting for
-    // it) is held for at most one replan_time_limit, and the other robots get their turns next.
+    // Each robot BLOCKED for longer than blocked_timeout or OFF_PATH, when its backoff allows,
+    // and one re-plan per update: the lock (and the service calls waiting for it) is held for at
+    // most one replan_time_limit, and the other robots get their turns next.
     std::vector<std::pair<int, const char*>> candidates;
     if (config_.replan_off_path) {
       for (int a : monitor_.offPathRobots()) candidates.emplace_back(a, " off path");
@@ -197,10 +215,12 @@ void ExecutionRunner::onTimer(const ros::TimerEvent&) {
       for (int a : monitor_.blockedRobots()) candidates.emplace_back(a, " blocked");
     }
     for (const auto& [a, reason] : candidates) {
-      ros::Time& last = last_attempt_[monitor_.robotIds()[a] + reason];
-      if (!last.isZero() && (now - last).toSec() < config_.blocked_timeout) continue;
-      last = now;
-      if (replanLocked({a}, config_.replan_time_limit).merged) execution = monitor_.update(poses, ros::Time::now());
+      const std::string key = monitor_.robotIds()[a] + reason;
+      const std::string cause = replanCause(execution, a);
+      if (!backoff_.due(key, now.toSec(), cause)) continue;
+      const bool merged = replanLocked({a}, config_.replan_time_limit).merged;
+      backoff_.record(key, now.toSec(), cause, merged);
+      if (merged) execution = monitor_.update(poses, ros::Time::now());
       break;
     }
     execution_pub_.publish(execution);

@@ -8,7 +8,8 @@
 /// A new plan replaces the running one. With `replan_blocked`, a robot BLOCKED for longer than
 /// blocked_timeout is planned again around the robot it waits for, and with `replan_off_path` a
 /// robot OFF_PATH from the pose where it stands (ExecutionMonitor::replan; each robot at most
-/// once per blocked_timeout, one re-plan per update); a merged re-plan is handed to `on_revised`
+/// once per blocked_timeout, less often after refusals while what it waits for stands still:
+/// replan_backoff.h; one re-plan per update); a merged re-plan is handed to `on_revised`
 /// (the node publishes the revised timelines). No exception leaves the timer.
 #include <cstdint>
 #include <functional>
@@ -25,6 +26,7 @@
 
 #include "fleet_planner/ros/execution_monitor.h"
 #include "fleet_planner/ros/planner_config.h"
+#include "fleet_planner/ros/replan_backoff.h"
 
 namespace fleet_planner {
 
@@ -70,9 +72,10 @@ class ExecutionRunner {
   std::mutex mutex_;  ///< guards the monitor
   ExecutionMonitor monitor_;
   RevisionCallback on_revised_;
-  /// Per robot and reason ("<id> blocked", "<id> off path"): its last automatic re-plan. A robot
-  /// re-planned while BLOCKED may leave its path right after, and is then planned again at once.
-  std::map<std::string, ros::Time> last_attempt_;
+  /// Per robot and reason ("<id> blocked", "<id> off path"): when its next automatic re-plan is
+  /// due. A robot re-planned while BLOCKED may leave its path right after, and is then planned
+  /// again at once.
+  ReplanBackoff backoff_;
 };
 
 }  // namespace fleet_planner
