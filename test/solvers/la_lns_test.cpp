@@ -20,19 +20,6 @@
 namespace fleet_planner::test {
 namespace {
 
-// A random walk of `steps` steps of agent a from its start (waits included).
-StatePath randomWalk(const SearchSpace& space, int a, int steps, Rng& rng) {
-  StatePath path{space.start(a)};
-  for (int t = 0; t < steps; ++t) {
-    std::vector<StateId> next{path.back()};
-    space.graph(a).forEachSuccessor(path.back(), [&](Action act, StateId s) {
-      if (space.allows(a, path.back(), act)) next.push_back(s);
-    });
-    path.push_back(next[rng.uniformInt(0, static_cast<std::int64_t>(next.size()) - 1)]);
-  }
-  return path;
-}
-
 // Five robots of every footprint kind on a 12 x 12 map (where they stand matters not: the tests
 // walk them at random from there).
 std::vector<Robot> mixedRobots() {

@@ -59,6 +59,18 @@ Subproblem allRobots(const World& world, double time_limit_s, std::uint64_t seed
   return sub;
 }
 
+StatePath randomWalk(const SearchSpace& space, int a, int steps, Rng& rng) {
+  StatePath path{space.start(a)};
+  for (int t = 0; t < steps; ++t) {
+    std::vector<StateId> next{path.back()};
+    space.graph(a).forEachSuccessor(path.back(), [&](Action act, StateId s) {
+      if (space.allows(a, path.back(), act)) next.push_back(s);
+    });
+    path.push_back(next[rng.uniformInt(0, static_cast<std::int64_t>(next.size()) - 1)]);
+  }
+  return path;
+}
+
 std::string toInstanceOrder(const World& world, const Subproblem& sub,
                             const std::vector<Path>& paths, Instance& planned, Plan& plan) {
   planned = Instance{};

@@ -14,6 +14,9 @@
 #include "fleet_planner/model/instance.h"
 #include "fleet_planner/model/plan.h"
 #include "fleet_planner/model/plan_validator.h"
+#include "fleet_planner/runtime/random.h"
+#include "fleet_planner/solvers/search/agent_conflicts.h"
+#include "fleet_planner/solvers/search/search_space.h"
 #include "fleet_planner/solvers/solver.h"
 
 #include "test_robots.h"
@@ -49,6 +52,10 @@ struct World {
 /// A subproblem over every robot of `world` in instance order, with no static or moving
 /// obstacles, a deadline `time_limit_s` seconds from now and `seed`.
 Subproblem allRobots(const World& world, double time_limit_s = 10.0, std::uint64_t seed = 1);
+
+/// A random walk of `steps` steps of agent a from its start (waits included), on moves the
+/// space allows.
+StatePath randomWalk(const SearchSpace& space, int a, int steps, Rng& rng);
 
 /// What one solve produced.
 struct Outcome {

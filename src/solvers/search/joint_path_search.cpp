@@ -72,7 +72,7 @@ JointSearchResult jointPathSearch(const SearchSpace& space, const std::vector<in
     target[i] = space.target(a);
     if (space.distance(a, start[i]) < 0) return result;
     const GridPose p = space.graph(a).pose(target[i]);
-    const int last = reservations.lastTaken(space.cells(a).body(p.heading), {p.x, p.y});
+    const int last = reservations.lastTaken(space.probe(a, p.heading, Action::Wait), {p.x, p.y});
     if (last == ReservationTable::kForever) return result;
     goal_earliest[i] = last + 1;
   }
@@ -162,7 +162,7 @@ JointSearchResult jointPathSearch(const SearchSpace& space, const std::vector<in
       auto consider = [&](Action act, StateId next) {
         if (space.distance(a, next) < 0 || !space.allows(a, s, act)) return;
         const CellSet& swept = cells.swept(p.heading, act);
-        if (!reservations.empty() && reservations.taken(swept, {p.x, p.y}, node.steps)) return;
+        if (!reservations.empty() && reservations.taken(space.probe(a, p.heading, act), {p.x, p.y}, node.steps)) return;
         met.clear();
         soft.collisions(a, s, act, node.steps, met);
         moves[i].push_back({act, next, &swept, {p.x, p.y}, static_cast<int>(met.size()), 1});

@@ -1,8 +1,10 @@
 #include "fleet_planner/solvers/search/reservation_table.h"
 
 #include <algorithm>
+#include <unordered_map>
 
 #include "fleet_planner/model/action.h"
+#include "fleet_planner/model/contact_probe.h"
 #include "fleet_planner/model/robot_cells.h"
 #include "fleet_planner/runtime/errors.h"
 
@@ -14,7 +16,17 @@ ReservationTable::ReservationTable(int width, int height, const std::vector<Movi
   blocks_x_ = (width + kBlock - 1) / kBlock;
   blocks_y_ = (height + kBlock - 1) / kBlock;
   std::vector<Entry> entries;
-  auto reserve = [&](const CellSet& set, const GridPose& at, int first, int last) {
+  // The probe pitch each reserved set allows; the footprints' own sets are looked at once.
+  std::unordered_map<const CellSet*, int> pitch_of;
+  auto allowPitch = [&](const CellSet& set, bool shared) {
+    if (pitch_ == 1) return;
+    const auto it = shared ? pitch_of.find(&set) : pitch_of.end();
+    const int pitch = it != pitch_of.end() ? it->second : (fourConnected(set) ? largestSquare(set) : 1);
+    if (shared) pitch_of.emplace(&set, pitch);
+    pitch_ = std::max(1, std::min(pitch_, pitch));
+  };
+  auto reserve = [&](const CellSet& set, const GridPose& at, int first, int last, bool shared) {
+    allowPitch(set, shared);
     for (const auto& run : set.runs()) {
       const int y = at.y + run.dy;
       for (int x = at.x + run.x0; x <= at.x + run.x1; ++x) {
@@ -37,11 +49,11 @@ ReservationTable::ReservationTable(int width, int height, const std::vector<Movi
     const int end = static_cast<int>(m.path.size()) - 1;
     for (int t = 0; t < end; ++t) {
       const bool held = t <= m.held_through;
-      auto take = [&](const CellSet& set, int last) {
-        reserve(set, m.path[t], held ? 0 : t, held && m.held_for_good ? kForever : last);
+      auto take = [&](const CellSet& set, int last, bool shared) {
+        reserve(set, m.path[t], held ? 0 : t, held && m.held_for_good ? kForever : last, shared);
       };
       if ((t <= m.start_turn && m.start_yaw) || (t == end - 1 && m.target_yaw)) {
-        take(*robot_cells.sweepAt(t, model), t);  // a rest at or a turn from or to a yaw
+        take(*robot_cells.sweepAt(t, model), t, false);  // a rest at or a turn from or to a yaw
         continue;
       }
       const auto action = actionBetween(m.path[t], m.path[t + 1], model);
@@ -56,10 +68,10 @@ ReservationTable::ReservationTable(int width, int height, const std::vector<Movi
         const int last_wait = m.target_yaw ? end - 2 : end - 1;  // the turn to the target yaw is no wait
         while (last + 1 <= last_wait && m.path[last + 2] == m.path[t]) ++last;
       }
-      take(cells.swept(m.path[t].heading, *action), last);
+      take(cells.swept(m.path[t].heading, *action), last, true);
       t = last;
     }
-    reserve(robot_cells.bodyAt(end), m.path.back(), end <= m.held_through ? 0 : end, kForever);
+    reserve(robot_cells.bodyAt(end), m.path.back(), end <= m.held_through ? 0 : end, kForever, false);
     last_change_ = std::max(last_change_, end);
   }
   std::vector<Entry> block_entries;

@@ -47,7 +47,7 @@ class Sipp {
     if (!reservations.empty()) {
       const GridPose p = graph_.pose(s);
       const std::size_t from = runs_.size();
-      reservations.takenIntervals(space_.cells(a_).swept(p.heading, action), {p.x, p.y}, runs_);
+      reservations.takenIntervals(space_.probe(a_, p.heading, action), {p.x, p.y}, runs_);
       for (std::size_t i = from; i < runs_.size(); ++i) {
         if (runs_[i].second == ReservationTable::kForever) runs_[i].second = kNever;
       }

@@ -1,7 +1,9 @@
 #include "fleet_planner/solvers/search/search_space.h"
 
 #include <set>
+#include <unordered_map>
 
+#include "fleet_planner/model/contact_probe.h"
 #include "fleet_planner/runtime/errors.h"
 #include "fleet_planner/runtime/resource_limits.h"
 
@@ -65,6 +67,7 @@ SearchSpace::SearchSpace(const Subproblem& problem)
   if (!problem.moving.empty()) {
     reservations_ = ReservationTable(g0.width(), g0.height(), problem.moving, *graphs_, g0.actionModel());
   }
+  makeProbes();
 
   for (int a = 0; a < numAgents(); ++a) {
     const Robot& r = instance_->robots[robots_[a]];
@@ -109,6 +112,35 @@ SearchSpace::SearchSpace(const Subproblem& problem)
         problem_ = label(a) + ": target " + toString(target) + " is not reachable from start " + toString(start);
       }
     }
+  }
+}
+
+void SearchSpace::makeProbes() {
+  // The pitch: the side of the largest square every body holds (a sweep holds its start's
+  // body), and the reservations' pitch; 1 (every cell) unless every sweep is 4-connected.
+  int pitch = reservations_.contactPitch();
+  for (int a = 0; a < numAgents() && pitch > 1; ++a) {
+    const FootprintCells& fc = cells(a);
+    for (int h = 0; h < kHeadings; ++h) {
+      pitch = std::min(pitch, largestSquare(fc.body(h)));
+      for (int act = 0; act < kActions; ++act) {
+        if (!fourConnected(fc.swept(h, static_cast<Action>(act)))) pitch = 1;
+      }
+    }
+  }
+  pitch = std::max(pitch, 1);
+  std::unordered_map<const FootprintCells*, std::shared_ptr<const Probes>> made;
+  probes_.resize(numAgents());
+  for (int a = 0; a < numAgents(); ++a) {
+    std::shared_ptr<const Probes>& probes = made[&cells(a)];
+    if (!probes) {
+      auto p = std::make_shared<Probes>();
+      for (int h = 0; h < kHeadings; ++h) {
+        for (int act = 0; act < kActions; ++act) (*p)[h][act] = contactProbe(cells(a).swept(h, static_cast<Action>(act)), pitch);
+      }
+      probes = std::move(p);
+    }
+    probes_[a] = probes;
   }
 }
 

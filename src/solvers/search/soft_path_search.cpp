@@ -28,13 +28,12 @@ SoftSearchResult softPathSearch(const SearchSpace& space, int a, const SoftPathT
                                 const Deadline& deadline, const SoftSearchOptions& options) {
   SoftSearchResult result;
   const StateGraph& g = space.graph(a);
-  const FootprintCells& cells = space.cells(a);
   const ReservationTable& reservations = space.reservations();
   const StateId start = space.start(a), target = space.target(a);
   if (space.distance(a, start) < 0) return result;
   const GridPose target_pose = g.pose(target);
   const int reserved_last =
-      reservations.lastTaken(cells.body(target_pose.heading), {target_pose.x, target_pose.y});
+      reservations.lastTaken(space.probe(a, target_pose.heading, Action::Wait), {target_pose.x, target_pose.y});
   if (reserved_last == ReservationTable::kForever) return result;
   const int goal_earliest = reserved_last + 1;
   const int static_from = std::max(soft.lastMove(), reservations.lastChange()) + 1;
@@ -94,7 +93,7 @@ SoftSearchResult softPathSearch(const SearchSpace& space, int a, const SoftPathT
       if (space.distance(a, next) < 0 || !space.allows(a, node.s, act)) return;
       const GridPose p = g.pose(node.s);
       if (!reservations.empty() &&
-          reservations.taken(cells.swept(p.heading, act), {p.x, p.y}, node.steps))
+          reservations.taken(space.probe(a, p.heading, act), {p.x, p.y}, node.steps))
         return;
       met.clear();
       soft.collisions(a, node.s, act, node.steps, met);

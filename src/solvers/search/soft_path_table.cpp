@@ -148,18 +148,11 @@ void SoftPathTable::collisions(int a, StateId s, Action action, int t,
   newQuery();
   stamp_[a] = query_;
   const GridPose p = space_.graph(a).pose(s);
-  forBuckets(space_.cells(a).swept(p.heading, action), {p.x, p.y}, [&](int bucket) {
-    // Each agent is checked once, though its motion may touch several of these buckets.
-    auto check = [&](int b) {
-      if (firstVisit(b) && hits(a, p, action, b, t)) out.push_back(b);
-    };
-    if (auto it = moving_.find(key(t, bucket)); it != moving_.end()) {
-      for (const Motion& m : it->second) {
-        if (firstVisit(m.agent) && meets(a, p, action, m.agent, m.pose, m.action)) out.push_back(m.agent);
-      }
-    }
-    for (int b : parked_[bucket]) {
-      if (t + 1 >= static_cast<int>(paths_[b].size())) check(b);
+  // Every agent whose sweep during step t (its body, once it has ended) meets a's sweep covers
+  // a cell of a's probe during t.
+  forCells(space_.probe(a, p.heading, action), {p.x, p.y}, [&](int cell) {
+    for (const Span& r : cell_spans_[cell]) {
+      if (r.first <= t && t <= r.last && firstVisit(r.agent)) out.push_back(r.agent);
     }
   });
 }
@@ -200,7 +193,8 @@ void SoftPathTable::unsafeRuns(int a, StateId s, Action action,
   const GridPose p = space_.graph(a).pose(s);
   // Neighbouring cells mostly hold the same pass of an agent, give or take a step: the spans
   // of each agent are merged as they come, so the caller sorts one run per pass, not per cell.
-  forCells(space_.cells(a).swept(p.heading, action), {p.x, p.y}, [&](int cell) {
+  // The probe of the sweep meets every agent's sweep (or body) the sweep meets.
+  forCells(space_.probe(a, p.heading, action), {p.x, p.y}, [&](int cell) {
     for (const Span& r : cell_spans_[cell]) {
       if (r.agent == a) continue;
       if (r.last == kNever) {

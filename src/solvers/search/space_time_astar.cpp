@@ -96,7 +96,7 @@ LowLevelResult spaceTimeAStar(const SearchSpace& space, int a, const AgentConstr
 
   // Earliest time from which the agent can stay at its target forever.
   const GridPose target_pose = g.pose(target);
-  const int reserved_last = reservations.lastTaken(cells.body(target_pose.heading), {target_pose.x, target_pose.y});
+  const int reserved_last = reservations.lastTaken(space.probe(a, target_pose.heading, Action::Wait), {target_pose.x, target_pose.y});
   if (reserved_last == ReservationTable::kForever) return result;
   const int target_blocked = constraints.lastBlockedAt(cells, target_pose);
   if (target_blocked == AgentConstraints::kForever) return result;
@@ -108,7 +108,7 @@ LowLevelResult spaceTimeAStar(const SearchSpace& space, int a, const AgentConstr
   auto stepBlocked = [&](StateId s, Action act, int t) {
     const GridPose p = g.pose(s);
     if (constraints.stepForbidden(cells, p, act, t)) return true;
-    return !reservations.empty() && reservations.taken(cells.swept(p.heading, act), {p.x, p.y}, t);
+    return !reservations.empty() && reservations.taken(space.probe(a, p.heading, act), {p.x, p.y}, t);
   };
 
   std::vector<Node> nodes;
@@ -162,7 +162,7 @@ LowLevelResult spaceTimeAStar(const SearchSpace& space, int a, const AgentConstr
       auto static_step = [&](StateId p, Action act) {
         const GridPose pose = g.pose(p);
         if (constraints.poseForbidden(cells, pose, static_from)) return false;
-        if (!reservations.empty() && reservations.taken(cells.body(pose.heading), {pose.x, pose.y}, static_from))
+        if (!reservations.empty() && reservations.taken(space.probe(a, pose.heading, Action::Wait), {pose.x, pose.y}, static_from))
           return false;
         return space.allows(a, p, act) && !stepBlocked(p, act, static_from);
       };

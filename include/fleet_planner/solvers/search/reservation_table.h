@@ -36,6 +36,11 @@ class ReservationTable {
   void takenIntervals(const CellSet& set, Cell origin, std::vector<std::pair<int, int>>& out) const;
   /// Last finite step of any reservation; after it the table never changes (-1 if empty).
   int lastChange() const { return last_change_; }
+  /// The largest pitch of contact probes (contact_probe.h) that find every reservation: the side
+  /// of the largest square every reserved set holds, or 1 unless every one is 4-connected
+  /// (kForever when the table is empty). The queries above may be asked with such a probe of a
+  /// set instead of the set: the answers are the same.
+  int contactPitch() const { return pitch_; }
 
  private:
   static constexpr int kBlock = 8;
@@ -63,6 +68,7 @@ class ReservationTable {
   std::vector<std::int32_t> block_offsets_;  // per block, into block_intervals_
   std::vector<Interval> block_intervals_;
   int last_change_ = -1;
+  int pitch_ = kForever;
 };
 
 }  // namespace fleet_planner

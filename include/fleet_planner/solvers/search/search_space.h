@@ -3,6 +3,7 @@
 /// restricted by the static footprints of other subproblems, the exact distance from every
 /// state to the agent's target in that restricted graph (the low-level heuristic, computed once
 /// per subproblem), and the reservation table of moving obstacles.
+#include <array>
 #include <memory>
 #include <string>
 #include <vector>
@@ -44,6 +45,12 @@ class SearchSpace {
   /// Steps from s to agent a's target in the restricted graph; -1 if unreachable.
   int distance(int a, StateId s) const { return distances_[a][s]; }
   const ReservationTable& reservations() const { return reservations_; }
+  /// The contact probe (contact_probe.h) of agent a's sweep doing `action` from `heading`: it
+  /// meets every body or sweep of an agent and every reservation that the sweep meets, so
+  /// lookups per cell may read it instead of the sweep.
+  const CellSet& probe(int a, int heading, Action action) const {
+    return (*probes_[a])[heading][static_cast<int>(action)];
+  }
 
   /// Empty if every agent has a valid start and target connected in its restricted graph;
   /// otherwise why not, naming the first such robot.
@@ -53,6 +60,9 @@ class SearchSpace {
   bool stopped() const { return stopped_; }
 
  private:
+  // Builds probes_ (after reservations_).
+  void makeProbes();
+
   const Instance* instance_;
   const FleetGraphs* graphs_;
   std::vector<int> robots_;
@@ -61,6 +71,8 @@ class SearchSpace {
   std::unique_ptr<ObstacleIndex> static_cells_;
   std::vector<DistanceTable> distances_;
   ReservationTable reservations_;
+  using Probes = std::array<std::array<CellSet, kActions>, kHeadings>;
+  std::vector<std::shared_ptr<const Probes>> probes_;  // agents with the same cells share them
   std::string problem_;
   bool stopped_ = false;
 };

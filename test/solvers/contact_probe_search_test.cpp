@@ -1,0 +1,193 @@
+// Contact probes in the searches (SearchSpace::probe, contact_probe.h): with robots large enough
+// that a probe is a fraction of its sweep, the soft path table and the reservation table answer
+// exactly as the whole sweeps do.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <set>
+#include <vector>
+
+#include "fleet_planner/model/collision.h"
+#include "fleet_planner/solvers/search/soft_path_table.h"
+#include "fleet_planner/solvers/search/space_time_astar.h"
+#include "solver_test_util.h"
+#include "test_maps.h"
+
+namespace fleet_planner::test {
+namespace {
+
+// Robots of 4-11 cells across (real robots on a 5 cm map are 6-20) close together on a 40 x 40
+// map, so that random walks from there meet. The small disc fits inside the others' sweeps.
+std::vector<Robot> largeRobots() {
+  const Footprint nose = Footprint::polygon({{-3.5, -3.5}, {-3.5, 3.5}, {3.5, 3.5}, {5.0, 0.0}, {3.5, -3.5}});
+  return {makeRobot("disc", Footprint::circle(3.0), {14, 14, 0}, {14, 14, 0}),
+          makeRobot("block", Footprint::block(-4.9, -2.9, 4.9, 2.9), {24, 14, 2}, {24, 14, 2}),
+          makeRobot("nose", nose, {14, 24, 1}, {14, 24, 1}),
+          makeRobot("wide", Footprint::block(-4.9, -3.4, 4.9, 3.4), {24, 24, 3}, {24, 24, 3}),
+          makeRobot("small", Footprint::circle(1.5), {19, 19, 0}, {19, 19, 0})};
+}
+
+// A random state of agent a near the others: a few cells from a random pose of their walks (in
+// `space`, which has every robot), any heading.
+StateId somewhere(const SearchSpace& space, int a, const std::vector<StatePath>& walks, Rng& rng) {
+  for (int tries = 0; tries < 100; ++tries) {
+    const int b = static_cast<int>(rng.uniformInt(0, static_cast<std::int64_t>(walks.size()) - 1));
+    const StatePath& w = walks[b];
+    const GridPose p = space.graph(b).pose(w[rng.uniformInt(0, static_cast<std::int64_t>(w.size()) - 1)]);
+    const int x = p.x + static_cast<int>(rng.uniformInt(-3, 3)), y = p.y + static_cast<int>(rng.uniformInt(-3, 3));
+    const StateId s = space.graph(a).id({x, y, static_cast<int>(rng.uniformInt(0, kHeadings - 1))});
+    if (s != kNoState && space.distance(a, s) >= 0) return s;
+  }
+  return space.start(a);
+}
+
+TEST(ContactProbeSearch, ProbesAreSmallerThanTheSweeps) {
+  const World w(freeMap(40, 40), largeRobots());
+  const SearchSpace space(allRobots(w));
+  for (int a = 0; a < 4; ++a) {  // not the small disc
+    for (int h = 0; h < kHeadings; ++h) {
+      const CellSet& sweep = space.cells(a).swept(h, Action::RotateCcw);
+      EXPECT_LT(space.probe(a, h, Action::RotateCcw).size() * 2, sweep.size()) << space.label(a);
+    }
+  }
+}
+
+// The small disc standing inside the wide block's footprint, off its centre, where only the
+// probe's inner grid can find it: in the soft path table and as a moving obstacle.
+TEST(ContactProbeSearch, ARobotInsideAnotherIsFound) {
+  std::vector<Robot> robots = largeRobots();
+  const World w(freeMap(40, 40), {robots[3], robots[4]});
+  const GridPose wide{20, 30, 0}, inside{22, 30, 0};  // two cells off the centre, along its length
+  const int wide_cells = static_cast<int>(w.graphs->cells(0).body(0).size());
+  ASSERT_TRUE(w.graphs->cells(0).body(0).contains(3, 1) && w.graphs->cells(0).body(0).contains(4, 2)) << wide_cells;
+
+  const SearchSpace space(allRobots(w));
+  const StateId s = space.graph(0).id(wide);
+  ASSERT_NE(s, kNoState);
+  SoftPathTable table(space);
+  table.insert(1, {space.graph(1).id(inside)});
+  std::vector<std::pair<int, int>> runs;
+  int forever = SoftPathTable::kNever;
+  table.unsafeRuns(0, s, Action::Wait, runs, forever);
+  EXPECT_EQ(forever, 0);
+  std::vector<int> met;
+  table.collisions(0, s, Action::Wait, 5, met);
+  EXPECT_EQ(met, std::vector<int>{1});
+
+  Subproblem sub = allRobots(w);
+  sub.robots = {0};
+  MovingObstacle m;
+  m.robot = 1;
+  m.path = {inside};
+  sub.moving.push_back(m);
+  const SearchSpace planned(sub);
+  const CellSet& probe = planned.probe(0, 0, Action::Wait);
+  EXPECT_LT(probe.size(), static_cast<std::size_t>(wide_cells));
+  EXPECT_TRUE(planned.reservations().taken(probe, {wide.x, wide.y}, 3));
+  EXPECT_EQ(planned.reservations().lastTaken(probe, {wide.x, wide.y}), ReservationTable::kForever);
+}
+
+// The soft path table's collisions (through partners) and unsafe steps against every pair of
+// sweeps, step by step, on random walks.
+TEST(ContactProbeSearch, SoftPathTableFindsEveryContact) {
+  const World w(freeMap(40, 40), largeRobots());
+  const SearchSpace space(allRobots(w));
+  Rng rng(3);
+  int pairs_seen = 0, unsafe_seen = 0;
+  for (int round = 0; round < 150; ++round) {
+    std::vector<StatePath> walks;
+    SoftPathTable table(space);
+    for (int a = 0; a < space.numAgents(); ++a) {
+      walks.push_back(randomWalk(space, a, static_cast<int>(rng.uniformInt(0, 10)), rng));
+      table.insert(a, walks.back());
+    }
+    std::vector<std::pair<int, int>> from_table;
+    for (int a = 0; a < space.numAgents(); ++a) {
+      for (int b : table.partners(a)) {
+        if (a < b) from_table.emplace_back(a, b);
+      }
+    }
+    ASSERT_EQ(from_table, conflictingPairs(space, walks)) << "round " << round;
+    pairs_seen += static_cast<int>(from_table.size());
+
+    const int a = static_cast<int>(rng.uniformInt(0, space.numAgents() - 1));
+    const StateId s = somewhere(space, a, walks, rng);
+    const GridPose p = space.graph(a).pose(s);
+    for (int act = 0; act < kActions; ++act) {
+      const Action action = static_cast<Action>(act);
+      if (!space.allows(a, s, action)) continue;
+      std::vector<std::pair<int, int>> runs;
+      int forever = SoftPathTable::kNever;
+      table.unsafeRuns(a, s, action, runs, forever);
+      for (int t = 0; t <= table.lastMove() + 2; ++t) {
+        bool expected = false;
+        for (int b = 0; b < space.numAgents(); ++b) {
+          if (b == a) continue;
+          const StateId q = stateAt(walks[b], t), n = stateAt(walks[b], t + 1);
+          expected = expected || sweepsOverlap(space.cells(a), p, action, space.cells(b), space.graph(b).pose(q),
+                                               stepAction(space.graph(b), q, n));
+        }
+        const bool found = t >= forever || std::any_of(runs.begin(), runs.end(), [t](const auto& r) {
+                             return r.first <= t && t <= r.second;
+                           });
+        ASSERT_EQ(found, expected) << "round " << round << ", " << space.label(a) << ", step " << t;
+        unsafe_seen += expected ? 1 : 0;
+      }
+    }
+  }
+  EXPECT_GT(pairs_seen, 30);
+  EXPECT_GT(unsafe_seen, 30);
+}
+
+// The reservation table asked with a probe answers as asked with the sweep: the other robots'
+// walks are moving obstacles of the wide block's subproblem.
+TEST(ContactProbeSearch, ReservationsFindEveryContact) {
+  const World w(freeMap(40, 40), largeRobots());
+  const SearchSpace all(allRobots(w));
+  Rng rng(9);
+  int taken_seen = 0;
+  for (int round = 0; round < 150; ++round) {
+    std::vector<StatePath> walks;
+    Subproblem sub = allRobots(w);
+    const int planned = 3;
+    sub.robots = {planned};
+    for (int b = 0; b < all.numAgents(); ++b) {
+      walks.push_back(randomWalk(all, b, static_cast<int>(rng.uniformInt(0, 10)), rng));
+      if (b == planned) continue;
+      MovingObstacle m;
+      m.robot = b;
+      for (StateId q : walks.back()) m.path.push_back(all.graph(b).pose(q));
+      sub.moving.push_back(m);
+    }
+    const SearchSpace space(sub);
+    const ReservationTable& reservations = space.reservations();
+    const StateId s = somewhere(all, planned, walks, rng);
+    const GridPose p = space.graph(0).pose(s);
+    for (int act = 0; act < kActions; ++act) {
+      const Action action = static_cast<Action>(act);
+      const CellSet& sweep = space.cells(0).swept(p.heading, action);
+      const CellSet& probe = space.probe(0, p.heading, action);
+      ASSERT_LT(probe.size(), sweep.size());
+      EXPECT_EQ(reservations.lastTaken(probe, {p.x, p.y}), reservations.lastTaken(sweep, {p.x, p.y}));
+      std::vector<std::pair<int, int>> by_probe, by_sweep;
+      reservations.takenIntervals(probe, {p.x, p.y}, by_probe);
+      reservations.takenIntervals(sweep, {p.x, p.y}, by_sweep);
+      auto steps = [&](const std::vector<std::pair<int, int>>& runs) {
+        std::set<int> out;
+        for (const auto& [first, last] : runs)
+          for (int t = first; t <= std::min(last, reservations.lastChange() + 1); ++t) out.insert(t);
+        return out;
+      };
+      EXPECT_EQ(steps(by_probe), steps(by_sweep));
+      for (int t = 0; t <= reservations.lastChange() + 1; ++t) {
+        const bool taken = reservations.taken(sweep, {p.x, p.y}, t);
+        ASSERT_EQ(reservations.taken(probe, {p.x, p.y}, t), taken) << "round " << round << ", step " << t;
+        taken_seen += taken ? 1 : 0;
+      }
+    }
+  }
+  EXPECT_GT(taken_seen, 30);
+}
+
+}  // namespace
+}  // namespace fleet_planner::test
