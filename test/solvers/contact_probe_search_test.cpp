@@ -101,12 +101,7 @@ TEST(ContactProbeSearch, SoftPathTableFindsEveryContact) {
       walks.push_back(randomWalk(space, a, static_cast<int>(rng.uniformInt(0, 10)), rng));
       table.insert(a, walks.back());
     }
-    std::vector<std::pair<int, int>> from_table;
-    for (int a = 0; a < space.numAgents(); ++a) {
-      for (int b : table.partners(a)) {
-        if (a < b) from_table.emplace_back(a, b);
-      }
-    }
+    const std::vector<std::pair<int, int>> from_table = partnerPairs(table, space.numAgents());
     ASSERT_EQ(from_table, conflictingPairs(space, walks)) << "round " << round;
     pairs_seen += static_cast<int>(from_table.size());
 

@@ -47,12 +47,7 @@ TEST(SoftPathTable, PartnersAgreeWithConflictingPairs) {
     // Remove and re-insert one agent: the index must forget its old entries.
     table.remove(2);
     table.insert(2, paths[2]);
-    std::vector<std::pair<int, int>> from_table;
-    for (int a = 0; a < space.numAgents(); ++a) {
-      for (int b : table.partners(a)) {
-        if (a < b) from_table.emplace_back(a, b);
-      }
-    }
+    const std::vector<std::pair<int, int>> from_table = partnerPairs(table, space.numAgents());
     ASSERT_EQ(from_table, conflictingPairs(space, paths)) << "round " << round;
     pairs_seen += static_cast<int>(from_table.size());
   }

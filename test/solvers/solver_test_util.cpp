@@ -71,6 +71,16 @@ StatePath randomWalk(const SearchSpace& space, int a, int steps, Rng& rng) {
   return path;
 }
 
+std::vector<std::pair<int, int>> partnerPairs(const SoftPathTable& table, int n) {
+  std::vector<std::pair<int, int>> out;
+  for (int a = 0; a < n; ++a) {
+    for (int b : table.partners(a)) {
+      if (a < b) out.emplace_back(a, b);
+    }
+  }
+  return out;
+}
+
 std::string toInstanceOrder(const World& world, const Subproblem& sub,
                             const std::vector<Path>& paths, Instance& planned, Plan& plan) {
   planned = Instance{};

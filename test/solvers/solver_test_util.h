@@ -17,6 +17,7 @@
 #include "fleet_planner/runtime/random.h"
 #include "fleet_planner/solvers/search/agent_conflicts.h"
 #include "fleet_planner/solvers/search/search_space.h"
+#include "fleet_planner/solvers/search/soft_path_table.h"
 #include "fleet_planner/solvers/solver.h"
 
 #include "test_robots.h"
@@ -56,6 +57,9 @@ Subproblem allRobots(const World& world, double time_limit_s = 10.0, std::uint64
 /// A random walk of `steps` steps of agent a from its start (waits included), on moves the
 /// space allows.
 StatePath randomWalk(const SearchSpace& space, int a, int steps, Rng& rng);
+
+/// Every pair (a, b), a < b, of the `n` agents of `table` that SoftPathTable::partners gives.
+std::vector<std::pair<int, int>> partnerPairs(const SoftPathTable& table, int n);
 
 /// What one solve produced.
 struct Outcome {
