@@ -28,9 +28,15 @@ ExecutionSettings executionSettings(const PlannerConfig& c) {
   return s;
 }
 
-// What a refused re-plan of robot a depended on: the robot it waits for and that robot's
-// progress (empty when it waits for nobody).
-std::string replanCause(const fleet_planner::FleetExecution& execution, int a) {
+// What a refused re-plan of robot a depended on. BLOCKED: the robot it waits for and that
+// robot's progress. OFF_PATH: everybody's progress (it is refused while someone has still to
+// pass where it stands, which changes as any robot moves on).
+std::string replanCause(const fleet_planner::FleetExecution& execution, int a, bool off_path) {
+  if (off_path) {
+    unsigned long long done = 0;
+    for (const auto& robot : execution.robots) done += robot.progress;
+    return "fleet@" + std::to_string(done);
+  }
   const std::string& awaited = execution.robots[a].blocked_by;
   for (const auto& robot : execution.robots) {
     if (!awaited.empty() && robot.robot_id == awaited) return awaited + "@" + std::to_string(robot.progress);
@@ -207,16 +213,16 @@ void ExecutionRunner::onTimer(const ros::TimerEvent&) {
     // Each robot BLOCKED for longer than blocked_timeout or OFF_PATH, when its backoff allows,
     // and one re-plan per update: the lock (and the service calls waiting for it) is held for at
     // most one replan_time_limit, and the other robots get their turns next.
-    std::vector<std::pair<int, const char*>> candidates;
+    std::vector<std::pair<int, bool>> candidates;  // (robot, off its path)
     if (config_.replan_off_path) {
-      for (int a : monitor_.offPathRobots()) candidates.emplace_back(a, " off path");
+      for (int a : monitor_.offPathRobots()) candidates.emplace_back(a, true);
     }
     if (config_.replan_blocked) {
-      for (int a : monitor_.blockedRobots()) candidates.emplace_back(a, " blocked");
+      for (int a : monitor_.blockedRobots()) candidates.emplace_back(a, false);
     }
-    for (const auto& [a, reason] : candidates) {
-      const std::string key = monitor_.robotIds()[a] + reason;
-      const std::string cause = replanCause(execution, a);
+    for (const auto& [a, off_path] : candidates) {
+      const std::string key = monitor_.robotIds()[a] + (off_path ? " off path" : " blocked");
+      const std::string cause = replanCause(execution, a, off_path);
       if (!backoff_.due(key, now.toSec(), cause)) continue;
       const bool merged = replanLocked({a}, config_.replan_time_limit).merged;
       backoff_.record(key, now.toSec(), cause, merged);

@@ -5,8 +5,9 @@
 /// time) gives the same answer as long as nothing it depends on has moved, and each try holds
 /// the execution lock for up to replan_time_limit. So each key (a robot and a reason) is tried at
 /// most once per `base_s`; each refusal doubles its wait, up to `max_s`, until the key's
-/// `cause` changes (for a BLOCKED robot: the robot it waits for, and that robot's progress) or a
-/// re-plan is merged, which bring the wait back to `base_s`. Times are seconds on any one clock.
+/// `cause` changes (for a BLOCKED robot: the robot it waits for and its progress; for one off its
+/// path: every robot's progress) or a re-plan is merged, which bring the wait back to `base_s`.
+/// Times are seconds on any one clock.
 #include <map>
 #include <string>
 
