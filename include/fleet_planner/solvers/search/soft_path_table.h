@@ -1,7 +1,8 @@
 #pragma once
 /// The current paths of a subproblem's agents as soft obstacles (LA-LNS, la_lns.h): which
-/// agents a candidate motion would collide with, found through a space-time index of buckets of
-/// cells, so that a query costs the agents nearby, not the whole fleet.
+/// agents a candidate motion would collide with, found through the steps each cell is swept
+/// (read at the cells of the motion's contact probe, SearchSpace::probe) and, for holding a
+/// state, a space-time index of buckets of cells: a query costs the agents nearby, not the fleet.
 ///
 /// Step t is the motion from time t to t + 1; an agent sweeps the cells of its action during a
 /// step (its footprint when it waits) and, once its path has ended, stands at its last state
