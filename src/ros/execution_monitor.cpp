@@ -274,12 +274,14 @@ fleet_planner::FleetExecution ExecutionMonitor::update(const std::vector<std::op
   }
   touching_ = touching;
 
-  // Robots off their paths, where they stand.
-  std::vector<std::pair<int, std::pair<Cell, CellSet>>> off_path;
+  // Where every robot stands, and which robots are off their paths.
+  std::vector<std::optional<std::pair<Cell, CellSet>>> standing(n);
+  std::vector<bool> off_path(n, false);
   for (int i = 0; i < n && i < static_cast<int>(poses.size()); ++i) {
-    if (poses[i] && !tracker_->done(i) &&
-        matchers_[i].distanceToPath(*poses[i], tracker_->progress(i), released(i)) > settings_.off_path_tolerance)
-      off_path.emplace_back(i, footprintAt(i, *poses[i]));
+    if (!poses[i]) continue;
+    off_path[i] = !tracker_->done(i) && matchers_[i].distanceToPath(*poses[i], tracker_->progress(i), released(i)) >
+                                            settings_.off_path_tolerance;
+    standing[i] = footprintAt(i, *poses[i]);
   }
   const double elapsed = (now - message_.header.stamp).toSec();
   for (int i = 0; i < n; ++i) {
@@ -287,10 +289,18 @@ fleet_planner::FleetExecution ExecutionMonitor::update(const std::vector<std::op
     const int sent = r.released;
     r.progress = tracker_->progress(i);
     r.released = released(i);
-    std::string kept_clear_of;  // an OFF_PATH robot that stands on its next released step
-    for (const auto& [o, cells] : off_path) {
-      for (int t = std::max<int>(sent, r.progress); o != i && t < static_cast<int>(r.released); ++t) {
-        if (!overlap(planCells().during(i, t), {&cells.second, cells.first})) continue;
+    // Nobody is released into a step that covers where another robot stands (what was released
+    // already stays released): a robot off its path stands where the plan does not know it, and
+    // the dependencies count a robot past a place once it is within the tolerances of the state
+    // after it, when it may still cover a cell of the place. (What it covers on its way on to
+    // that state lies within its footprints where it stands and there, but for slivers of a
+    // turn's corners far smaller than a cell at the heading tolerance.)
+    std::string kept_clear_of;
+    for (int o = 0; o < n; ++o) {
+      if (o == i || !standing[o]) continue;
+      const PlacedCells there{&standing[o]->second, standing[o]->first};
+      for (int t = std::max<int>(sent, r.progress); t < static_cast<int>(r.released); ++t) {
+        if (!overlap(planCells().during(i, t), there)) continue;
         r.released = t;
         kept_clear_of = ids_[o];
       }
@@ -306,7 +316,7 @@ fleet_planner::FleetExecution ExecutionMonitor::update(const std::vector<std::op
       r.state = RobotExecutionMsg::ARRIVED;
     } else if (i >= static_cast<int>(poses.size()) || !poses[i]) {
       r.state = RobotExecutionMsg::NO_POSE;
-    } else if (std::any_of(off_path.begin(), off_path.end(), [i](const auto& o) { return o.first == i; })) {
+    } else if (off_path[i]) {
       r.state = RobotExecutionMsg::OFF_PATH;
     } else if (r.released > r.progress) {
       r.state = RobotExecutionMsg::DRIVING;

@@ -7,8 +7,10 @@
 /// A robot's progress comes from its pose (ProgressMatcher: within the tolerances of a state, or
 /// on its way to the next); it only goes forward, and only through released states. Robots that stand still are
 /// never moved on: a robot that falls behind holds those that must wait for it, nobody else.
-/// A robot OFF_PATH stands where its plan does not know it: nobody is released into a step that
-/// covers its footprint where it stands (what was released already stays released).
+/// Nobody is released into a step that covers where another robot stands (what was released
+/// already stays released): a robot OFF_PATH stands where its plan does not know it, and a robot
+/// counts as at a state within the tolerances of it, so it may not quite have left the cells the
+/// step before it covered, which the dependencies take as free.
 #include <cstdint>
 #include <map>
 #include <memory>
