@@ -58,7 +58,7 @@ void addLimitOptions(CLI::App* cmd, ResourceLimits& limits) {
 }
 
 void addBackendOptions(CLI::App* cmd, PlanningOptions& options, std::vector<std::string>& params) {
-  cmd->add_option("--backend", options.backend, "la_lacam (default) | la_cbs | la_lns (any registered backend)");
+  cmd->add_option("--backend", options.backend, "la_lns (default) | la_lacam | la_cbs (any registered backend)");
   cmd->add_option("--fallback", options.fallback,
                   "backend tried on a subproblem that --backend fails, in the rest of its time share, before the "
                   "safeguard merges it (default la_lns; none: no fallback)");

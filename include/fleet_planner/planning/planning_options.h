@@ -16,8 +16,10 @@
 namespace fleet_planner {
 
 struct PlanningOptions {
-  /// Backend of every subproblem: "la_lacam", "la_cbs", "la_lns" or any registered name.
-  std::string backend = "la_lacam";
+  /// Backend of every subproblem: "la_lns", "la_lacam", "la_cbs" or any registered name.
+  /// LA-LNS plans each level around the moving robots of the earlier ones, so levels need not
+  /// wait for each other; a parallel backend's levels are delayed until they fit.
+  std::string backend = "la_lns";
   /// Backend tried on a subproblem that `backend` fails without proving it infeasible, in the
   /// rest of its time share, before the safeguard merges it ("": none). A serial backend needs a
   /// serial fallback.

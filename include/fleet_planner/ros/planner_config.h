@@ -15,7 +15,7 @@ namespace fleet_planner {
 
 struct PlannerConfig {
   // Planning.
-  std::string backend = "la_lacam";  ///< default backend: "la_cbs", "la_lacam" or any plugin name
+  std::string backend = "la_lns";    ///< default backend: "la_lns", "la_lacam", "la_cbs" or any plugin name
   double time_limit = 10.0;          ///< default seconds per call, graphs included
   /// Largest time_limit a request may ask for (a larger one, or inf, is INVALID_REQUEST): no
   /// call can hold the planner for longer. time_limit must not exceed it.
