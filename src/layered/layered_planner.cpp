@@ -66,13 +66,11 @@ SubproblemSolvingOptions solvingOptions(const LayeredOptions& options, const Dec
 LayeredResult planLayered(const GridMap& map, const Instance& instance, const FleetGraphs& graphs,
                           const LayeredOptions& options, const Deadline& deadline) {
   LayeredResult result;
-  // Unknown backends throw InvalidInput before any work.
-  const bool serial = makeSolver(options.backend, options.backend_parameters)->avoidsMovingObstacles();
-  if (!options.fallback.empty() &&
-      !makeSolver(options.fallback, options.backend_parameters)->avoidsMovingObstacles() && serial) {
-    throw InvalidInput("fallback backend '" + options.fallback + "' cannot plan around moving obstacles, which " +
-                       "backend '" + options.backend + "' hands on");
-  }
+  // Unknown backends throw InvalidInput before any work. A parallel fallback of a serial backend
+  // answers InvalidInput at once around the chain's timed paths; solveByBackend() then plans
+  // the level with those robots at their targets and delays it.
+  makeSolver(options.backend, options.backend_parameters);
+  if (!options.fallback.empty()) makeSolver(options.fallback, options.backend_parameters);
   const int n = static_cast<int>(instance.robots.size());
 
   // 1. Decomposition. It needs every robot to reach its target alone: an instance that fails the

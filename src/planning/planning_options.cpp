@@ -20,13 +20,7 @@ std::vector<std::string> checkPlanningOptions(const PlanningOptions& o) {
     }
   };
   const auto backend = solver("backend", o.backend);
-  if (!o.fallback.empty()) {
-    const auto fallback = solver("fallback", o.fallback);
-    if (backend && fallback && backend->avoidsMovingObstacles() && !fallback->avoidsMovingObstacles()) {
-      problems.push_back("fallback: backend '" + o.fallback + "' cannot plan around moving obstacles, which backend '" +
-                         o.backend + "' hands on (choose a serial fallback such as la_lns, or none)");
-    }
-  }
+  if (!o.fallback.empty()) solver("fallback", o.fallback);
   for (const std::string& p : checkBackendParameters(o.backend_parameters)) problems.push_back("backend_parameters: " + p);
   if (o.last_step < 1 || o.last_step > 4) problems.push_back("steps: must be 1..4 (got " + std::to_string(o.last_step) + ")");
   if (o.threads < 0) problems.push_back("threads: must be >= 0, 0 for the machine's cores (got " + std::to_string(o.threads) + ")");

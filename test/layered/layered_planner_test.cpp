@@ -78,17 +78,6 @@ TEST(LayeredFallback, FallbackSolvesWhatTheBackendCannot) {
   EXPECT_TRUE(helped.subproblems[0].by_fallback);
 }
 
-TEST(LayeredFallback, ParallelFallbackOfASerialBackendIsRefused) {
-  const GridMap map = test::mapFromRows({"....."});
-  Instance in;
-  in.robots = {dot("a", {0, 0, 0}, {4, 0, 0})};
-  const FleetGraphs graphs(map, footprintsOf(in));
-  LayeredOptions o;
-  o.backend = "la_cbs";
-  o.fallback = "la_lacam";
-  EXPECT_THROW(planLayered(map, in, graphs, o, Deadline::in(1.0)), InvalidInput);
-}
-
 // Test-only serial backends: one that never finds a plan, and one that finds none around moving
 // obstacles (it is LA-CBS otherwise).
 class NeverSerial : public Solver {
@@ -141,6 +130,27 @@ TEST(LayeredFallback, FallbackIsDelayedAroundTheChainLikeTheBackend) {
   EXPECT_EQ(r.subproblems[0].robots, std::vector<int>{1});
   for (const auto& s : r.subproblems) EXPECT_TRUE(s.by_fallback);
   EXPECT_FALSE(r.subproblems[0].delayed_in_cluster);
+  EXPECT_TRUE(r.subproblems[1].delayed_in_cluster);
+}
+
+// The same with a parallel fallback (LA-LaCAM) of the serial backend: it cannot take a2's
+// moving path at all, so a1's level is planned with a2 at its target and delayed until it fits.
+TEST(LayeredFallback, AParallelFallbackOfASerialBackendPlansAroundTheChainAtItsTargets) {
+  ASSERT_TRUE(kNeverSerial);
+  const GridMap map = test::mapFromRows({"@.@", "...", "@.@"});
+  Instance in;
+  in.robots = {dot("a1", {1, 2, 3}, {1, 1, 3}), dot("a2", {0, 1, 0}, {2, 1, 0})};
+  const FleetGraphs graphs(map, footprintsOf(in));
+  LayeredOptions o;
+  o.backend = "never_serial_test_backend";
+  o.fallback = "la_lacam";
+  const LayeredResult r = planLayered(map, in, graphs, o, Deadline::in(5.0));
+  ASSERT_TRUE(r.success()) << r.reason;
+  EXPECT_TRUE(validatePlan(map, in, r.plan).valid());
+  EXPECT_TRUE(r.step_asides.empty()) << r.step_asides.front();
+  EXPECT_TRUE(r.merges.empty()) << r.merges.front();
+  ASSERT_EQ(r.subproblems.size(), 2u);
+  for (const auto& s : r.subproblems) EXPECT_TRUE(s.by_fallback) << s.reason;
   EXPECT_TRUE(r.subproblems[1].delayed_in_cluster);
 }
 

@@ -21,8 +21,9 @@ struct PlanningOptions {
   /// wait for each other; a parallel backend's levels are delayed until they fit.
   std::string backend = "la_lns";
   /// Backend tried on a subproblem that `backend` fails without proving it infeasible, in the
-  /// rest of its time share, before the safeguard merges it ("": none). A serial backend needs a
-  /// serial fallback.
+  /// rest of its time share, before the safeguard merges it ("": none). A parallel fallback of a
+  /// serial backend plans the level with the earlier levels of its chain at their targets and
+  /// delays it until it fits among their paths, as the serial backends do past their budget.
   std::string fallback = "la_lns";
   /// Options of the backends by name, e.g. {"la_lns": {"neighborhood_size": 12}}.
   BackendParameters backend_parameters;
