@@ -109,49 +109,32 @@ const bool kShyOfMoving = registerSolver("shy_of_moving_test_backend",
                                          [] { return std::make_unique<ShyOfMovingSerial>(); });
 
 // Paper Figure 1 B: a1's level plans around a2's path. The backend fails both levels; the
-// fallback fails around a2's moving path as well, so, as the backend would be, it is tried with
-// a2 at its target and its plan delayed until it fits: both levels are solved by the fallback,
-// with no robot stepping aside and no merge, and the plan is valid.
+// fallback fails around a2's moving path as well (a serial one that finds nothing around moving
+// obstacles; LA-LaCAM, a parallel one, cannot take them at all), so, as the backend would be,
+// it is tried with a2 at its target and its plan delayed until it fits: both levels are solved
+// by the fallback, with no robot stepping aside and no merge, and the plan is valid.
 TEST(LayeredFallback, FallbackIsDelayedAroundTheChainLikeTheBackend) {
   ASSERT_TRUE(kNeverSerial && kShyOfMoving);
   const GridMap map = test::mapFromRows({"@.@", "...", "@.@"});
   Instance in;
   in.robots = {dot("a1", {1, 2, 3}, {1, 1, 3}), dot("a2", {0, 1, 0}, {2, 1, 0})};
   const FleetGraphs graphs(map, footprintsOf(in));
-  LayeredOptions o;
-  o.backend = "never_serial_test_backend";
-  o.fallback = "shy_of_moving_test_backend";
-  const LayeredResult r = planLayered(map, in, graphs, o, Deadline::in(5.0));
-  ASSERT_TRUE(r.success()) << r.reason;
-  EXPECT_TRUE(validatePlan(map, in, r.plan).valid());
-  EXPECT_TRUE(r.step_asides.empty()) << r.step_asides.front();
-  EXPECT_TRUE(r.merges.empty()) << r.merges.front();
-  ASSERT_EQ(r.subproblems.size(), 2u);
-  EXPECT_EQ(r.subproblems[0].robots, std::vector<int>{1});
-  for (const auto& s : r.subproblems) EXPECT_TRUE(s.by_fallback);
-  EXPECT_FALSE(r.subproblems[0].delayed_in_cluster);
-  EXPECT_TRUE(r.subproblems[1].delayed_in_cluster);
-}
-
-// The same with a parallel fallback (LA-LaCAM) of the serial backend: it cannot take a2's
-// moving path at all, so a1's level is planned with a2 at its target and delayed until it fits.
-TEST(LayeredFallback, AParallelFallbackOfASerialBackendPlansAroundTheChainAtItsTargets) {
-  ASSERT_TRUE(kNeverSerial);
-  const GridMap map = test::mapFromRows({"@.@", "...", "@.@"});
-  Instance in;
-  in.robots = {dot("a1", {1, 2, 3}, {1, 1, 3}), dot("a2", {0, 1, 0}, {2, 1, 0})};
-  const FleetGraphs graphs(map, footprintsOf(in));
-  LayeredOptions o;
-  o.backend = "never_serial_test_backend";
-  o.fallback = "la_lacam";
-  const LayeredResult r = planLayered(map, in, graphs, o, Deadline::in(5.0));
-  ASSERT_TRUE(r.success()) << r.reason;
-  EXPECT_TRUE(validatePlan(map, in, r.plan).valid());
-  EXPECT_TRUE(r.step_asides.empty()) << r.step_asides.front();
-  EXPECT_TRUE(r.merges.empty()) << r.merges.front();
-  ASSERT_EQ(r.subproblems.size(), 2u);
-  for (const auto& s : r.subproblems) EXPECT_TRUE(s.by_fallback) << s.reason;
-  EXPECT_TRUE(r.subproblems[1].delayed_in_cluster);
+  for (const char* fallback : {"shy_of_moving_test_backend", "la_lacam"}) {
+    SCOPED_TRACE(fallback);
+    LayeredOptions o;
+    o.backend = "never_serial_test_backend";
+    o.fallback = fallback;
+    const LayeredResult r = planLayered(map, in, graphs, o, Deadline::in(5.0));
+    ASSERT_TRUE(r.success()) << r.reason;
+    EXPECT_TRUE(validatePlan(map, in, r.plan).valid());
+    EXPECT_TRUE(r.step_asides.empty()) << r.step_asides.front();
+    EXPECT_TRUE(r.merges.empty()) << r.merges.front();
+    ASSERT_EQ(r.subproblems.size(), 2u);
+    EXPECT_EQ(r.subproblems[0].robots, std::vector<int>{1});
+    for (const auto& s : r.subproblems) EXPECT_TRUE(s.by_fallback) << s.reason;
+    EXPECT_FALSE(r.subproblems[0].delayed_in_cluster);
+    EXPECT_TRUE(r.subproblems[1].delayed_in_cluster);
+  }
 }
 
 class LayeredBackends : public ::testing::TestWithParam<std::string> {};
