@@ -82,8 +82,11 @@ ReplanReport ExecutionMonitor::replan(const std::vector<int>& robots, double tim
   for (int a : robots) {
     const bool off_path = message_.robots[a].state == RobotExecutionMsg::OFF_PATH && a < static_cast<int>(poses_.size()) && poses_[a];
     if (off_path) {
-      // From where it stands: a pose no state of its plan has.
-      const GridPoseFit fit = toGridPose(*plan_.map, *poses_[a], tolerance);
+      // From where it stands: a pose no state of its plan has, snapped to the nearest cell
+      // centre however far (at most half a cell's diagonal) it is from it.
+      PoseTolerance snap = tolerance;
+      snap.position = std::max(snap.position, 0.71 * plan_.map->resolution());
+      const GridPoseFit fit = toGridPose(*plan_.map, *poses_[a], snap);
       if (!fit.ok()) {
         ReplanReport report;
         report.status = SolveStatus::InvalidInput;
