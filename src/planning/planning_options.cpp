@@ -11,16 +11,15 @@ namespace fleet_planner {
 
 std::vector<std::string> checkPlanningOptions(const PlanningOptions& o) {
   std::vector<std::string> problems;
-  auto solver = [&](const char* option, const std::string& name) -> std::unique_ptr<Solver> {
+  auto known = [&](const char* option, const std::string& name) {
     try {
-      return makeSolver(name);
+      makeSolver(name);
     } catch (const std::exception& e) {
       problems.push_back(std::string(option) + ": " + e.what());
-      return nullptr;
     }
   };
-  const auto backend = solver("backend", o.backend);
-  if (!o.fallback.empty()) solver("fallback", o.fallback);
+  known("backend", o.backend);
+  if (!o.fallback.empty()) known("fallback", o.fallback);
   for (const std::string& p : checkBackendParameters(o.backend_parameters)) problems.push_back("backend_parameters: " + p);
   if (o.last_step < 1 || o.last_step > 4) problems.push_back("steps: must be 1..4 (got " + std::to_string(o.last_step) + ")");
   if (o.threads < 0) problems.push_back("threads: must be >= 0, 0 for the machine's cores (got " + std::to_string(o.threads) + ")");

@@ -90,7 +90,9 @@ ReplanReport ExecutionMonitor::replan(const std::vector<int>& robots, double tim
       if (!fit.ok()) {
         ReplanReport report;
         report.status = SolveStatus::InvalidInput;
-        report.message = "'" + ids_[a] + "' is off its path at a pose that is not on the map: " + fit.error;
+        report.message = "'" + ids_[a] + "' (off its path) stands at a pose that is not on the map: " + fit.error;
+        ++message_.replans_refused;  // refused like any re-plan that finds no way
+        message_.last_replan = report.message;
         return report;
       }
       rq.moved.push_back({a, fit.pose, fit.yaw});
@@ -225,19 +227,20 @@ const PlanCells& ExecutionMonitor::planCells() {
   return *cells_;
 }
 
-std::set<std::pair<int, int>> ExecutionMonitor::overlaps(
-    const std::vector<std::optional<geometry_msgs::Pose2D>>& poses) const {
+const std::pair<Cell, CellSet>& ExecutionMonitor::footprintOf(int robot, const Poses& poses,
+                                                              Footprints& footprints) const {
+  if (!footprints[robot]) footprints[robot].emplace(footprintAt(robot, *poses[robot]));
+  return *footprints[robot];
+}
+
+std::set<std::pair<int, int>> ExecutionMonitor::overlaps(const Poses& poses, Footprints& footprints) const {
   const GridMap& map = *plan_.map;
   const int n = static_cast<int>(poses.size());
   std::vector<GridPoint> at(n);
   for (int i = 0; i < n; ++i) {
     if (poses[i]) at[i] = toGrid(map, *poses[i]);
   }
-  std::vector<std::optional<std::pair<Cell, CellSet>>> cells(n);
-  auto cellsOf = [&](int i) -> const std::pair<Cell, CellSet>& {
-    if (!cells[i]) cells[i].emplace(footprintAt(i, *poses[i]));
-    return *cells[i];
-  };
+  auto cellsOf = [&](int i) -> const std::pair<Cell, CellSet>& { return footprintOf(i, poses, footprints); };
   std::set<std::pair<int, int>> out;
   for (int i = 0; i < n; ++i) {
     if (!poses[i]) continue;
@@ -262,7 +265,9 @@ fleet_planner::FleetExecution ExecutionMonitor::update(const std::vector<std::op
   }
   // Overlaps: a pair counts once per contact, however long it lasts.
   poses_ = poses;
-  const auto touching = overlaps(poses);
+  // Each robot's footprint where it stands, rasterised when first needed.
+  Footprints footprints(poses.size());
+  const auto touching = overlaps(poses, footprints);
   new_contacts_.clear();
   auto describe = [&](int i) {
     const auto& p = *poses[i];
@@ -277,14 +282,12 @@ fleet_planner::FleetExecution ExecutionMonitor::update(const std::vector<std::op
   }
   touching_ = touching;
 
-  // Where every robot stands, and which robots are off their paths.
-  std::vector<std::optional<std::pair<Cell, CellSet>>> standing(n);
+  // Robots off their paths.
   std::vector<bool> off_path(n, false);
   for (int i = 0; i < n && i < static_cast<int>(poses.size()); ++i) {
-    if (!poses[i]) continue;
-    off_path[i] = !tracker_->done(i) && matchers_[i].distanceToPath(*poses[i], tracker_->progress(i), released(i)) >
-                                            settings_.off_path_tolerance;
-    standing[i] = footprintAt(i, *poses[i]);
+    off_path[i] = poses[i] && !tracker_->done(i) &&
+                  matchers_[i].distanceToPath(*poses[i], tracker_->progress(i), released(i)) >
+                      settings_.off_path_tolerance;
   }
   const double elapsed = (now - message_.header.stamp).toSec();
   for (int i = 0; i < n; ++i) {
@@ -299,10 +302,12 @@ fleet_planner::FleetExecution ExecutionMonitor::update(const std::vector<std::op
     // that state lies within its footprints where it stands and there, but for slivers of a
     // turn's corners far smaller than a cell at the heading tolerance.)
     std::string kept_clear_of;
-    for (int o = 0; o < n; ++o) {
-      if (o == i || !standing[o]) continue;
-      const PlacedCells there{&standing[o]->second, standing[o]->first};
-      for (int t = std::max<int>(sent, r.progress); t < static_cast<int>(r.released); ++t) {
+    const int first_new = std::max<int>(sent, r.progress);
+    for (int o = 0; o < n && first_new < static_cast<int>(r.released); ++o) {
+      if (o == i || o >= static_cast<int>(poses.size()) || !poses[o]) continue;
+      const auto& [cell, set] = footprintOf(o, poses, footprints);
+      const PlacedCells there{&set, cell};
+      for (int t = first_new; t < static_cast<int>(r.released); ++t) {
         if (!overlap(planCells().during(i, t), there)) continue;
         r.released = t;
         kept_clear_of = ids_[o];

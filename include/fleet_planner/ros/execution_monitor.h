@@ -101,8 +101,13 @@ class ExecutionMonitor {
   /// What the robot may drive through now: the dependencies' release, capped where its pose
   /// would be ambiguous (ProgressMatcher::releaseCap).
   int released(int robot) const;
+  using Poses = std::vector<std::optional<geometry_msgs::Pose2D>>;
+  /// Per robot, its footprint at its pose, once rasterised (footprintOf).
+  using Footprints = std::vector<std::optional<std::pair<Cell, CellSet>>>;
+  /// Robot's footprint at poses[robot] (which must be known), rasterised into `footprints` once.
+  const std::pair<Cell, CellSet>& footprintOf(int robot, const Poses& poses, Footprints& footprints) const;
   /// Pairs of robots (i < j) whose footprints at their poses share a map cell.
-  std::set<std::pair<int, int>> overlaps(const std::vector<std::optional<geometry_msgs::Pose2D>>& poses) const;
+  std::set<std::pair<int, int>> overlaps(const Poses& poses, Footprints& footprints) const;
   /// Robots in RobotExecution state `state` at the last update (plan order).
   std::vector<int> robotsIn(std::uint8_t state) const;
   /// The map cells robot i's footprint covers at `pose`: a set relative to a cell.
