@@ -168,10 +168,10 @@ class LacamSearch {
   void expandLow(int id, int low, const Config& current) {
     const int depth = nodes_[id].tree[low].depth;
     const int agent = orders_[static_cast<std::size_t>(id) * n_ + depth];
-    std::vector<StateId> options = pibt_.candidates(agent, current[agent]);
+    StateChoices options = pibt_.candidates(agent, current[agent]);
     // Shuffle with the seed (Fisher-Yates) so that no direction is always tried first.
-    for (std::size_t i = options.size(); i > 1; --i) {
-      std::swap(options[i - 1], options[pibt_.rng().uniformInt(0, static_cast<std::int64_t>(i) - 1)]);
+    for (int i = options.size(); i > 1; --i) {
+      std::swap(options[i - 1], options[static_cast<int>(pibt_.rng().uniformInt(0, i - 1))]);
     }
     for (StateId s : options) nodes_[id].tree.push_back({low, agent, s, depth + 1});
     live_low_ += static_cast<long long>(options.size());
