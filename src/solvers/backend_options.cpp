@@ -41,6 +41,7 @@ void LaLns::configure(const BackendOptionValues& values) {
   bind.integer("stall_repairs", o.stall_repairs, 1, 1000000);
   bind.integer("collision_cost", o.collision_cost, 1, 1000000);
   bind.integer("max_expansions_per_search", o.max_expansions_per_search, 1, kMaxCount);
+  bind.number("heuristic_weight", o.heuristic_weight, 1, 100);
   bind.integer("joint_size", o.joint_size, 2, 16);
   bind.integer("joint_search_nodes", o.joint_search_nodes, 0, kMaxCount);
   bind.number("joint_seconds", o.joint_seconds, 0, 1e6);

@@ -152,6 +152,7 @@ SoftSearchResult LnsSearch::search(int a) {
   SoftSearchOptions o;
   o.collision_cost = options_.collision_cost * escalation_[a];
   o.max_expansions = options_.max_expansions_per_search;
+  o.heuristic_weight = options_.heuristic_weight;
   SoftSearchResult r = softPathSearch(space_, a, table_, problem_.deadline, o);
   stats_.low_level_expansions += r.expansions;
   if (r.outcome == SoftSearchResult::Outcome::Found) {

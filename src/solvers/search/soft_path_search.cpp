@@ -1,6 +1,7 @@
 #include "fleet_planner/solvers/search/soft_path_search.h"
 
 #include <algorithm>
+#include <cmath>
 #include <queue>
 
 #include "fleet_planner/solvers/search/space_time_astar.h"
@@ -46,8 +47,10 @@ SoftSearchResult softPathSearch(const SearchSpace& space, int a, const SoftPathT
            static_cast<std::uint32_t>(s);
   };
   std::priority_queue<int, std::vector<int>, SoftOrder<Node>> open(SoftOrder<Node>{&nodes});
+  // Lower bound on the rest of the path, weighted (in sixteenths, so that f stays an integer).
+  const int weight16 = static_cast<int>(std::lround(std::max(options.heuristic_weight, 1.0) * 16.0));
   auto heuristic = [&](StateId s, int steps) {
-    return std::max(space.distance(a, s), goal_earliest - steps);
+    return std::max(space.distance(a, s), goal_earliest - steps) * weight16 / 16;
   };
   auto push = [&](const Node& n) {
     const std::uint64_t k = key(n.s, n.t, n.finished);

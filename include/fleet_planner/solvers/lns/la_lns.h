@@ -39,6 +39,10 @@ struct LaLnsOptions {
   int collision_cost = 16;
   /// Expansions of one low-level search before it gives up.
   long long max_expansions_per_search = 200'000;
+  /// Heuristic weight of the soft low-level search (SoftSearchOptions::heuristic_weight): its
+  /// paths cost at most this factor more than the cheapest, and it seldom runs out of
+  /// expansions where robots must wait for each other.
+  double heuristic_weight = 1.5;
   /// Joint repair: agents replanned together, first by LA-CBS (its time, at most a quarter of
   /// what is left, and its expansions), then, if it fails, the group is small enough and the
   /// neighbourhood has grown to the whole subproblem, by a joint search (joint_path_search.h)
