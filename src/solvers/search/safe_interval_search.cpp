@@ -52,6 +52,9 @@ class Sipp {
         if (runs_[i].second == ReservationTable::kForever) runs_[i].second = kNever;
       }
     }
+    // Neighbouring cells mostly hold the same intervals, one after the other: dropping those
+    // repeats first halves what the sort has to order.
+    runs_.erase(std::unique(runs_.begin(), runs_.end()), runs_.end());
     std::sort(runs_.begin(), runs_.end());
     Unsafe u;
     for (const auto& r : runs_) {
