@@ -52,20 +52,8 @@ class Sipp {
         if (runs_[i].second == ReservationTable::kForever) runs_[i].second = kNever;
       }
     }
-    // Neighbouring cells mostly hold the same intervals, one after the other: dropping those
-    // repeats first halves what the sort has to order.
-    runs_.erase(std::unique(runs_.begin(), runs_.end()), runs_.end());
-    std::sort(runs_.begin(), runs_.end());
     Unsafe u;
-    for (const auto& r : runs_) {
-      if (!u.runs.empty() &&
-          (u.runs.back().second == kNever || r.first <= u.runs.back().second + 1)) {
-        if (u.runs.back().second != kNever)
-          u.runs.back().second = std::max(u.runs.back().second, r.second);
-      } else {
-        u.runs.push_back(r);
-      }
-    }
+    unionOf(runs_, u.runs);
     return unsafe_.emplace(k, std::move(u)).first->second;
   }
 
@@ -82,6 +70,71 @@ class Sipp {
     }
     out.push_back({first, kNever});
     return intervals_.emplace(s, std::move(out)).first->second;
+  }
+
+  // The union of `runs` (inclusive; second == kNever: from first on) as sorted, disjoint,
+  // non-adjacent runs. A motion's runs number about a hundred, most of them repeats from
+  // neighbouring cells: when they all end within the first kSteps steps their steps are set in
+  // a bitset and read back in order, else they are sorted and merged.
+  void unionOf(std::vector<std::pair<int, int>>& runs, std::vector<std::pair<int, int>>& out) {
+    out.clear();
+    int forever = kNever, lo = kNever, hi = -1;
+    for (const auto& [first, last] : runs) {
+      if (last == kNever) {
+        forever = std::min(forever, first);
+      } else {
+        lo = std::min(lo, first);
+        hi = std::max(hi, last);
+      }
+    }
+    if (hi >= kSteps) {
+      std::sort(runs.begin(), runs.end());
+      for (const auto& r : runs) {
+        if (!out.empty() && (out.back().second == kNever || r.first <= out.back().second + 1)) {
+          if (out.back().second != kNever) out.back().second = std::max(out.back().second, r.second);
+        } else {
+          out.push_back(r);
+        }
+      }
+      return;
+    }
+    if (hi >= 0) {
+      for (const auto& [first, last] : runs) {
+        if (last == kNever) continue;
+        for (int t = first; t <= last;) {  // whole words at once where the run covers them
+          const int word = t >> 6, bit = t & 63;
+          const int n = std::min(64 - bit, last - t + 1);
+          steps_[word] |= (n == 64 ? ~0ULL : ((1ULL << n) - 1) << bit);
+          t += n;
+        }
+      }
+      int t = lo;
+      while (t <= hi) {
+        // Next set bit at or after t, then the next clear one.
+        auto scan = [&](int from, bool set) {
+          for (int word = from >> 6; word <= (hi >> 6); ++word) {
+            std::uint64_t bits = set ? steps_[word] : ~steps_[word];
+            if (word == (from >> 6)) bits &= ~0ULL << (from & 63);
+            if (bits != 0) return (word << 6) + __builtin_ctzll(bits);
+          }
+          return ((hi >> 6) + 1) << 6;
+        };
+        const int first = scan(t, true);
+        if (first > hi) break;
+        const int last = scan(first, false) - 1;
+        out.emplace_back(first, last);
+        t = last + 1;
+      }
+      std::fill(steps_.begin() + (lo >> 6), steps_.begin() + (hi >> 6) + 1, 0ULL);
+    }
+    if (forever == kNever) return;
+    // The runs from `forever` on are covered; one that reaches it joins the last run.
+    while (!out.empty() && out.back().first >= forever) out.pop_back();
+    if (!out.empty() && out.back().second + 1 >= forever) {
+      out.back().second = kNever;
+    } else {
+      out.emplace_back(forever, kNever);
+    }
   }
 
   // Earliest departure step in [lo, hi] at which `u` allows the move (-1 if none).
@@ -105,6 +158,8 @@ class Sipp {
   std::unordered_map<std::uint64_t, Unsafe> unsafe_;
   std::unordered_map<StateId, std::vector<Interval>> intervals_;
   std::vector<std::pair<int, int>> runs_;  // scratch
+  static constexpr int kSteps = 4096;      // steps of the bitset of unionOf
+  std::vector<std::uint64_t> steps_ = std::vector<std::uint64_t>(kSteps / 64, 0);
 };
 
 }  // namespace
