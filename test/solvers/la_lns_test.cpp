@@ -157,6 +157,36 @@ TEST(SafeIntervalSearch, WaitsInPocketUntilRunnerPassed) {
   EXPECT_TRUE(in_pocket) << "the waiter can only let the runner by from the pocket";
 }
 
+// A robot of another subproblem stands on the corridor until step `wait`, then drives to its
+// end: the waiter leaves right after it, whether the reservations end within the steps the
+// search unites through a bitset (4,096) or beyond them.
+TEST(SafeIntervalSearch, WaitsForAMovingObstacleShortOrLong) {
+  for (int wait : {40, 5000}) {
+    const World w(freeMap(8, 1), {dot("blocker", {3, 0, 0}, {7, 0, 0}), dot("waiter", {0, 0, 0}, {6, 0, 0})});
+    Subproblem sub = allRobots(w);
+    sub.robots = {1};
+    MovingObstacle m;
+    m.robot = 0;
+    m.path.assign(static_cast<std::size_t>(wait) + 1, GridPose{3, 0, 0});
+    for (int x = 4; x <= 7; ++x) m.path.push_back({x, 0, 0});
+    sub.moving.push_back(m);
+    const SearchSpace space(sub);
+    const SoftPathTable table(space);
+    const SafeIntervalResult r = safeIntervalSearch(space, 0, table, Deadline::in(5.0), 100000);
+    ASSERT_EQ(r.outcome, SafeIntervalResult::Outcome::Found) << "wait " << wait;
+    // One cell behind the blocker (sweeps of a step may not share a cell): x = 6 at step
+    // wait + 5, the step after the blocker has parked at x = 7.
+    EXPECT_EQ(static_cast<int>(r.path.size()), wait + 6) << "wait " << wait;
+    Plan plan;
+    plan.paths.push_back(m.path);
+    Path p;
+    for (StateId s : r.path) p.push_back(space.graph(0).pose(s));
+    plan.paths.push_back(p);
+    const ValidationResult v = validatePlan(w.map, w.instance, plan);
+    EXPECT_TRUE(v.valid()) << "wait " << wait << ": " << v.violation.message;
+  }
+}
+
 TEST(SafeIntervalSearch, NoCollisionFreePathIsNoPath) {
   // The runner parks for good on the only way to the waiter's target.
   const World w(freeMap(7, 1),
