@@ -5,7 +5,6 @@
 #include <numeric>
 
 #include "fleet_planner/model/collision.h"
-#include "fleet_planner/io/instance_generator.h"
 #include "fleet_planner/solvers/lacam/la_pibt.h"
 #include "fleet_planner/solvers/search/space_time_astar.h"
 #include "solver_test_util.h"
@@ -17,12 +16,8 @@ namespace {
 TEST(LaPibt, GeneratedStepsHaveNoConflictsAcrossBuckets) {
   int moves = 0, near_pairs = 0;
   for (std::uint64_t seed = 0; seed < 6; ++seed) {
-    GeneratorOptions o;
-    o.robots = 40;
-    o.seed = seed;
-    o.polygon_share = 0.3;
     const GridMap map = freeMap(36, 36);
-    const World w(map, generateInstance(map, o).robots);
+    const World w(map, generatedRobots(map, 40, seed));
     const Subproblem sub = allRobots(w);
     const SearchSpace space(sub);
     LaPibt pibt(space, seed);
@@ -61,12 +56,8 @@ TEST(LaPibt, GeneratedStepsHaveNoConflictsAcrossBuckets) {
 TEST(LaPibt, RememberedEscapesGiveTheSameStepsAsFreshSearches) {
   int differing_orders = 0, moves = 0;
   for (std::uint64_t seed = 0; seed < 4; ++seed) {
-    GeneratorOptions o;
-    o.robots = 30;
-    o.seed = seed;
-    o.polygon_share = 0.3;
     const GridMap map = freeMap(28, 28);
-    const World w(map, generateInstance(map, o).robots);
+    const World w(map, generatedRobots(map, 30, seed));
     const Subproblem sub = allRobots(w);
     const SearchSpace space(sub);
     LaPibt remembering(space, seed), fresh(space, seed, /*remember_escapes=*/false);

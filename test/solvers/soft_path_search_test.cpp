@@ -6,7 +6,6 @@
 
 #include <gtest/gtest.h>
 
-#include "fleet_planner/io/instance_generator.h"
 #include "fleet_planner/runtime/random.h"
 #include "solver_test_util.h"
 #include "test_maps.h"
@@ -33,12 +32,8 @@ TEST(SoftPathSearch, WeightedPathsCostAtMostTheWeightTimesTheCheapest) {
   long long exact_expansions = 0, weighted_expansions = 0;
   int searches = 0, dearer = 0;
   for (std::uint64_t seed = 0; seed < 12; ++seed) {
-    GeneratorOptions o;
-    o.robots = 14;
-    o.seed = seed;
-    o.polygon_share = 0.3;
     const GridMap map = seed % 2 == 0 ? freeMap(24, 24) : freeMap(18, 32);
-    const World w(map, generateInstance(map, o).robots);
+    const World w(map, generatedRobots(map, 14, seed));
     const Subproblem sub = allRobots(w);
     const SearchSpace space(sub);
     ASSERT_TRUE(space.problem().empty()) << space.problem();

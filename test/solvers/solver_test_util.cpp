@@ -5,6 +5,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "fleet_planner/io/instance_generator.h"
 #include "fleet_planner/model/collision.h"
 #include "fleet_planner/model/footprint_cells.h"
 #include "fleet_planner/model/instance_check.h"
@@ -57,6 +58,14 @@ Subproblem allRobots(const World& world, double time_limit_s, std::uint64_t seed
   sub.deadline = Deadline::in(time_limit_s);
   sub.seed = seed;
   return sub;
+}
+
+std::vector<Robot> generatedRobots(const GridMap& map, int count, std::uint64_t seed) {
+  GeneratorOptions o;
+  o.robots = count;
+  o.seed = seed;
+  o.polygon_share = 0.3;
+  return generateInstance(map, o).robots;
 }
 
 StatePath randomWalk(const SearchSpace& space, int a, int steps, Rng& rng) {

@@ -54,6 +54,9 @@ struct World {
 /// obstacles, a deadline `time_limit_s` seconds from now and `seed`.
 Subproblem allRobots(const World& world, double time_limit_s = 10.0, std::uint64_t seed = 1);
 
+/// `count` robots of the paper's generator on `map` (30 % of them polygons), drawn with `seed`.
+std::vector<Robot> generatedRobots(const GridMap& map, int count, std::uint64_t seed);
+
 /// A random walk of `steps` steps of agent a from its start (waits included), on moves the
 /// space allows.
 StatePath randomWalk(const SearchSpace& space, int a, int steps, Rng& rng);
