@@ -9,11 +9,11 @@ namespace fleet_planner {
 
 namespace {
 
-// Stable sort of the few (at most kActions) entries of [first, last).
-template <class T, class Less>
-void sortFew(T* first, T* last, Less less) {
-  for (T* i = first + 1; i < last; ++i) {
-    for (T* j = i; j > first && less(*j, *(j - 1)); --j) std::swap(*j, *(j - 1));
+// Stable sort of the first n (at most kActions) entries of `items`.
+template <class Array, class Less>
+void sortFew(Array& items, int n, Less less) {
+  for (int i = 1; i < n; ++i) {
+    for (int j = i; j > 0 && less(items[j], items[j - 1]); --j) std::swap(items[j], items[j - 1]);
   }
 }
 
@@ -149,7 +149,7 @@ StateChoices LaPibt::escapeSteps(int a, StateId from, const CellSet& sweep, Cell
   for (int k = 0; k < firsts.size(); ++k) {
     if (depth_of_first[k] >= 0) order[found++] = k;
   }
-  sortFew(order.data(), order.data() + found, [&](int x, int y) { return depth_of_first[x] < depth_of_first[y]; });
+  sortFew(order, found, [&](int x, int y) { return depth_of_first[x] < depth_of_first[y]; });
   StateChoices result;
   for (int i = 0; i < found; ++i) result.push(firsts[order[i]]);
   return result;
@@ -185,7 +185,7 @@ bool LaPibt::assign(int a, const Config& current, Config& next, int pusher, Stat
     options = candidates(a, current[a]);
     std::array<std::pair<StateId, std::uint64_t>, kActions> ranked;
     for (int i = 0; i < options.size(); ++i) ranked[i] = {options[i], rng_.next()};
-    sortFew(ranked.data(), ranked.data() + options.size(), [&](const auto& x, const auto& y) {
+    sortFew(ranked, options.size(), [&](const auto& x, const auto& y) {
       const int dx = space_.distance(a, x.first), dy = space_.distance(a, y.first);
       return dx != dy ? dx < dy : x.second < y.second;
     });
