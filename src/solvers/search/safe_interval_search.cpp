@@ -1,6 +1,7 @@
 #include "fleet_planner/solvers/search/safe_interval_search.h"
 
 #include <algorithm>
+#include <array>
 #include <cstdlib>
 #include <queue>
 #include <unordered_map>
@@ -108,17 +109,17 @@ class Sipp {
           t += n;
         }
       }
+      // The first set (or clear) step at or after `from`; past hi's word if none.
+      auto scan = [&](int from, bool set) {
+        for (int word = from >> 6; word <= (hi >> 6); ++word) {
+          std::uint64_t bits = set ? steps_[word] : ~steps_[word];
+          if (word == (from >> 6)) bits &= ~0ULL << (from & 63);
+          if (bits != 0) return (word << 6) + __builtin_ctzll(bits);
+        }
+        return ((hi >> 6) + 1) << 6;
+      };
       int t = lo;
       while (t <= hi) {
-        // Next set bit at or after t, then the next clear one.
-        auto scan = [&](int from, bool set) {
-          for (int word = from >> 6; word <= (hi >> 6); ++word) {
-            std::uint64_t bits = set ? steps_[word] : ~steps_[word];
-            if (word == (from >> 6)) bits &= ~0ULL << (from & 63);
-            if (bits != 0) return (word << 6) + __builtin_ctzll(bits);
-          }
-          return ((hi >> 6) + 1) << 6;
-        };
         const int first = scan(t, true);
         if (first > hi) break;
         const int last = scan(first, false) - 1;
@@ -158,8 +159,8 @@ class Sipp {
   std::unordered_map<std::uint64_t, Unsafe> unsafe_;
   std::unordered_map<StateId, std::vector<Interval>> intervals_;
   std::vector<std::pair<int, int>> runs_;  // scratch
-  static constexpr int kSteps = 4096;      // steps of the bitset of unionOf
-  std::vector<std::uint64_t> steps_ = std::vector<std::uint64_t>(kSteps / 64, 0);
+  static constexpr int kSteps = 4096;          // steps of the bitset of unionOf
+  std::array<std::uint64_t, kSteps / 64> steps_{};  // unionOf's bitset, all clear between calls
 };
 
 }  // namespace

@@ -12,8 +12,8 @@
 /// produced unless the fixed moves clash.
 #include <algorithm>
 #include <array>
-#include <unordered_map>
 #include <cstdint>
+#include <unordered_map>
 #include <vector>
 
 #include "fleet_planner/runtime/random.h"
@@ -28,7 +28,6 @@ using Config = std::vector<StateId>;
 class StateChoices {
  public:
   void push(StateId s) { items_[size_++] = s; }
-  void clear() { size_ = 0; }
   int size() const { return size_; }
   StateId& operator[](int i) { return items_[i]; }
   const StateId* begin() const { return items_.data(); }
