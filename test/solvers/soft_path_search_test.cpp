@@ -1,7 +1,7 @@
 // LA-LNS's soft low level (soft_path_search.h) with a weighted heuristic: its paths cost at most
 // `weight` times the cheapest, and it expands fewer nodes than the exact search. (On small maps
-// the saving is small, 5-15 %; it is large on long paths that wait, as in the packed levels of
-// maze-128-128-10: docs/history.md.)
+// the saving is small, 3-13 % in the fleets tried; it is large on long paths that wait, as in
+// the packed levels of maze-128-128-10: docs/history.md.)
 #include "fleet_planner/solvers/search/soft_path_search.h"
 
 #include <gtest/gtest.h>
