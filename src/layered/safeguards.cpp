@@ -61,6 +61,13 @@ std::optional<std::string> Solving::proveAmong(const std::vector<std::pair<int, 
   return std::nullopt;
 }
 
+// The robots of other subproblems that may step aside for subproblem k.
+std::vector<StaticFootprint> Solving::standingInTheWay(std::size_t k) const {
+  const std::vector<int>& robots = order_[k].robots;
+  return robotsInTheWay(instance_, graphs_, robots, standingFor(k), options_.budget.step_aside_margin,
+                        std::max(options_.budget.step_aside_min_count, robots.size()));
+}
+
 // Safeguard, before a merge: subproblem k solved again with the robots of other subproblems
 // near its robots' ways free to step aside (step_aside.h). For a serial backend it leaves its
 // cluster's chain: it and the rest of the chain become clusters of their own, so that it is
@@ -69,9 +76,7 @@ std::optional<std::string> Solving::proveAmong(const std::vector<std::pair<int, 
 bool Solving::letStepAside(std::size_t k, const SolveResult& failed) {
   SolvedSubproblem& s = order_[k];
   s.step_aside_tried = true;
-  const std::vector<StaticFootprint> near =
-      robotsInTheWay(instance_, graphs_, s.robots, standingFor(k), options_.budget.step_aside_margin,
-                     std::max(options_.budget.step_aside_min_count, s.robots.size()));
+  const std::vector<StaticFootprint> near = standingInTheWay(k);
   if (near.empty()) return false;
   for (const StaticFootprint& f : near) s.stepping_aside.push_back(f.robot);
   step_asides_.push_back("subproblem " + std::to_string(k) + " (" + idsOf(instance_, s.robots) + ") failed: " +

@@ -67,6 +67,7 @@ class Solving {
   // planned with the earlier levels at their targets and merged by delay. False if no robot
   // stands near.
   bool letStepAside(std::size_t k, const SolveResult& failed);
+  std::vector<StaticFootprint> standingInTheWay(std::size_t k) const;
   // Safeguard: merge subproblem k with the next one (or, for the last, with the one before);
   // their clusters become one. Results that depended on either are dropped.
   void mergeWithNeighbour(std::size_t k, const SolveResult& failed);

@@ -54,6 +54,10 @@ void Solving::solveOne(std::size_t k) {
       }
     }
   }
+  // A first attempt that robots of other subproblems may help by stepping aside ends when its
+  // search is stuck rather than at the end of its share: the step aside gets the time.
+  if (!order_[k].step_aside_tried && order_.size() > 1 && sub.robots.size() > 1)
+    sub.may_give_up = [this, k] { return !standingInTheWay(k).empty(); };
   // A time share: at least a quarter of what is left, more for a larger part of the robots
   // still to be solved in this round (those of subproblems solved or being solved included);
   // the last subproblem gets all of it. A share that runs out triggers the safeguard.

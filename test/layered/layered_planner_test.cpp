@@ -283,6 +283,50 @@ TEST(LayeredStepAside, StandingRobotStepsAsideForAFailedLevel) {
   }
 }
 
+// A test-only backend that gives up whenever it may (Subproblem::may_give_up) and is LA-LaCAM
+// otherwise; it notes what it was asked.
+struct Ask {
+  std::size_t robots, returning;
+  bool may_give_up;
+};
+std::vector<Ask> asked;
+class GivesUp : public Solver {
+ public:
+  std::string name() const override { return "gives_up_test_backend"; }
+  bool avoidsMovingObstacles() const override { return false; }
+  SolveResult solve(const Subproblem& p) override {
+    const bool may_give_up = p.may_give_up && p.may_give_up();
+    asked.push_back({p.robots.size(), p.returning.size(), may_give_up});
+    if (!may_give_up) return makeSolver("la_lacam")->solve(p);
+    SolveResult r;
+    r.status = SolveStatus::Timeout;
+    r.reason = "stuck";
+    return r;
+  }
+};
+const bool kGivesUp = registerSolver("gives_up_test_backend", [] { return std::make_unique<GivesUp>(); });
+
+// The knot above: the first attempt at {A, B}, with C standing near, may give up early (C may
+// step aside then); the attempt with C stepping aside may not (only a merge would be left), nor
+// may C's own subproblem of one robot.
+TEST(LayeredStepAside, OnlyAFirstAttemptThatOthersMayHelpMayGiveUp) {
+  ASSERT_TRUE(kGivesUp);
+  const GridMap map = test::mapFromRows({".......", "@@@.@@@", "@@@.@@@"});
+  Instance in;
+  in.robots = {dot("A", {0, 0, 0}, {6, 0, 0}), dot("B", {6, 0, 1}, {0, 0, 1}), dot("C", {3, 1, 2}, {3, 1, 2})};
+  asked.clear();
+  const LayeredResult r = plan(map, in, "gives_up_test_backend", true, 10.0);
+  ASSERT_TRUE(r.success()) << r.reason;
+  EXPECT_TRUE(validatePlan(map, in, r.plan).valid());
+  ASSERT_EQ(r.step_asides.size(), 1u);
+  EXPECT_NE(r.step_asides[0].find("stuck"), std::string::npos) << r.step_asides[0];
+  ASSERT_EQ(asked.size(), 3u);
+  for (const Ask& a : asked) {
+    const bool first_of_knot = a.robots == 2 && a.returning == 0;
+    EXPECT_EQ(a.may_give_up, first_of_knot) << a.robots << " robots, " << a.returning << " returning";
+  }
+}
+
 TEST(LayeredPlanner, RawModeIsOneSubproblem) {
   const GridMap map = test::freeMap(8, 4);
   Instance in;

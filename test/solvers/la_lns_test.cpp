@@ -259,5 +259,32 @@ TEST(LaLns, ProvesAnImpossibleSwapInALongCorridorByThePairAlone) {
   EXPECT_EQ(o.result.culprits, (std::vector<int>{0, 1}));
 }
 
+// The same swap, with both proofs out of reach (no joint states, no pair expansions): LA-LNS
+// is stuck. When the caller has something else to try, it says so after a few repairs of
+// every robot, long before its budget; otherwise it spends the budget.
+TEST(LaLns, GivesUpWhenStuckOnlyIfTheCallerMayTrySomethingElse) {
+  const int n = 16;
+  const World w(freeMap(n, 1), {dot("a", {0, 0, 0}, {n - 3, 0, 0}), dot("b", {n - 3, 0, 2}, {0, 0, 2})});
+  LaLnsOptions options;
+  options.joint_search_nodes = 0;
+  options.pair_proof_expansions = 0;
+  for (const bool may_give_up : {true, false}) {
+    SCOPED_TRACE(may_give_up);
+    LaLns solver(options);
+    Subproblem sub = allRobots(w, 60.0);
+    sub.max_expansions = 5'000'000;
+    if (may_give_up) sub.may_give_up = [] { return true; };
+    const Outcome o = solveWith(solver, w, sub);
+    EXPECT_EQ(o.result.status, SolveStatus::Timeout) << describe(o);
+    const bool stuck = o.result.reason.find("stuck after 20 repairs of every robot") != std::string::npos;
+    EXPECT_EQ(stuck, may_give_up) << o.result.reason;
+    EXPECT_EQ(o.result.reason.find("expansion budget") != std::string::npos, !may_give_up) << o.result.reason;
+    if (may_give_up) {
+      EXPECT_LT(o.result.stats.low_level_expansions, sub.max_expansions / 4) << describe(o);
+      EXPECT_EQ(o.result.culprits, (std::vector<int>{0, 1}));
+    }
+  }
+}
+
 }  // namespace
 }  // namespace fleet_planner::test

@@ -19,6 +19,22 @@ TEST(NeighborhoodGrowth, DoublesAfterAStallUpToEveryAgentAndFallsBackOnProgress)
   EXPECT_EQ(g.next(9), 8);  // progress
 }
 
+TEST(NeighborhoodGrowth, CountsStallsWithEveryAgentUntilProgress) {
+  NeighborhoodGrowth g(/*base=*/2, /*stall_repairs=*/2, /*agents=*/3);
+  EXPECT_EQ(g.next(5), 2);
+  EXPECT_EQ(g.next(5), 2);
+  EXPECT_EQ(g.next(5), 3);  // a stall at 2 agents grows the neighbourhood: not exhausted
+  EXPECT_EQ(g.exhausted(), 0);
+  EXPECT_EQ(g.next(5), 3);
+  EXPECT_EQ(g.next(5), 3);  // a stall at every agent
+  EXPECT_EQ(g.exhausted(), 1);
+  EXPECT_EQ(g.next(5), 3);
+  EXPECT_EQ(g.next(5), 3);
+  EXPECT_EQ(g.exhausted(), 2);
+  EXPECT_EQ(g.next(4), 2);  // progress
+  EXPECT_EQ(g.exhausted(), 0);
+}
+
 TEST(NeighborhoodGrowth, NeverMoreThanTheAgents) {
   NeighborhoodGrowth g(8, 1, 3);
   EXPECT_EQ(g.next(2), 3);

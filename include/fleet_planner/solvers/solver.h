@@ -4,6 +4,7 @@
 /// static obstacles and, for serial backends, the timed plans of other robots as moving
 /// obstacles.
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -58,6 +59,12 @@ struct Subproblem {
   /// Backends that count expansions honour it; unlike a deadline, it gives the same outcome on
   /// every machine.
   long long max_expansions = -1;
+  /// Asked by a backend whose search is stuck: true if the caller has something else to try
+  /// (robots of other subproblems may step aside), and the backend may answer TIMEOUT now
+  /// rather than spend the deadline. Empty: no. Backends that repair a plan ask it (LA-LNS: after
+  /// a stall with every agent replanned, a count of repairs, so the outcome does not depend on
+  /// the machine). A question, not a flag: the answer costs a search per robot.
+  std::function<bool()> may_give_up;
 };
 
 /// ResourceLimit: the deadline's memory guard tripped, or a search's tables would not fit in

@@ -60,6 +60,10 @@ SolveResult LnsSearch::run() {
       link(c->a, c->b);
     }
     if (std::optional<SolveResult> stop = outOfBudget()) return *stop;
+    if (growth_.exhausted() > 0 && mayGiveUp()) {
+      return timeout("stuck after " + std::to_string(options_.stall_repairs) +
+                     " repairs of every robot without fewer colliding pairs");
+    }
     repair();
     if (proof_) {
       SolveResult r = failedResult(SolveStatus::Infeasible, *proof_);
@@ -67,6 +71,11 @@ SolveResult LnsSearch::run() {
       return r;
     }
   }
+}
+
+bool LnsSearch::mayGiveUp() {
+  if (!may_give_up_) may_give_up_ = problem_.may_give_up && problem_.may_give_up();
+  return *may_give_up_;
 }
 
 std::optional<SolveResult> LnsSearch::outOfBudget() const {

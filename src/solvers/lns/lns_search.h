@@ -35,6 +35,9 @@ class LnsSearch {
  private:
   std::optional<SolveResult> outOfBudget() const;
 
+  // Subproblem::may_give_up, asked once.
+  bool mayGiveUp();
+
   SolveResult timeout(const std::string& why) const;
 
   // " (a & b, c & d, ...)": the first few colliding pairs, to say where the plan is stuck.
@@ -124,6 +127,7 @@ class LnsSearch {
   NeighborhoodGrowth growth_;
   int size_ = 0;                    // agents in this repair's neighbourhood (growth_)
   std::array<double, kMethods> weights_;
+  std::optional<bool> may_give_up_;  // the caller's answer, once asked
 };
 
 }  // namespace fleet_planner

@@ -24,7 +24,9 @@
 /// subproblems are hard obstacles. Incomplete: the only proofs it gives are a knot whose joint
 /// search exhausts its joint space, or a pair of a knot that cannot reach its targets even alone
 /// among the static obstacles (INFEASIBLE, naming the robots); any other unsolved subproblem is
-/// TIMEOUT. Same input and seed, same plan.
+/// TIMEOUT. Same input and seed, same plan. When the caller has something else to try
+/// (Subproblem::may_give_up), it answers TIMEOUT as soon as `stall_repairs` repairs with every
+/// agent in the neighbourhood bring no fewer colliding pairs, rather than at the deadline.
 #include "fleet_planner/solvers/solver.h"
 
 namespace fleet_planner {

@@ -2,7 +2,8 @@
 /// How many agents one LA-LNS repair replans (la_lns.h). Small neighbourhoods repair fast but
 /// settle in local minima of a few colliding pairs: after `stall_repairs` repairs without a new
 /// lowest number of colliding pairs the size doubles, up to every agent of the subproblem
-/// (colliding or not); a new lowest number brings it back to `base`.
+/// (colliding or not); a new lowest number brings it back to `base`. A stall at every agent is
+/// counted: the search is stuck wherever it looks (exhausted()).
 #include <algorithm>
 #include <limits>
 
@@ -19,12 +20,18 @@ class NeighborhoodGrowth {
       best_ = colliding_pairs;
       stalled_ = 0;
       size_ = base_;
+      stalls_at_every_agent_ = 0;
     } else if (++stalled_ >= stall_repairs_) {
+      if (size_ == agents_) ++stalls_at_every_agent_;
       size_ = std::min(2 * size_, agents_);
       stalled_ = 0;
     }
     return size_;
   }
+
+  /// Stalls (stall_repairs repairs each) since the last new lowest number of colliding pairs
+  /// with every agent in the neighbourhood.
+  int exhausted() const { return stalls_at_every_agent_; }
 
  private:
   int base_;
@@ -33,6 +40,7 @@ class NeighborhoodGrowth {
   int size_;
   int best_ = std::numeric_limits<int>::max();
   int stalled_ = 0;  // repairs since best_ was reached
+  int stalls_at_every_agent_ = 0;
 };
 
 }  // namespace fleet_planner
