@@ -30,18 +30,22 @@ std::vector<Robot> mixedRobots() {
 }
 
 // The table's collision graph is the one the backends' own conflict code finds, on random walks
-// of robots of every footprint kind, of different lengths (ended paths stay put).
+// of robots of every footprint kind, of different lengths (ended paths stay put); walks of up
+// to 12 steps and of up to 1,200 (past the table's blocks of steps, kBlockSteps, and its last
+// block).
 TEST(SoftPathTable, PartnersAgreeWithConflictingPairs) {
+  for (const int max_steps : {12, 1200}) {
+  SCOPED_TRACE(max_steps);
   const World w(freeMap(12, 12), mixedRobots());
   const Subproblem sub = allRobots(w);
   const SearchSpace space(sub);
   Rng rng(5);
   int pairs_seen = 0;
-  for (int round = 0; round < 200; ++round) {
+  for (int round = 0; round < (max_steps > 12 ? 20 : 200); ++round) {
     std::vector<StatePath> paths;
     SoftPathTable table(space);
     for (int a = 0; a < space.numAgents(); ++a) {
-      paths.push_back(randomWalk(space, a, static_cast<int>(rng.uniformInt(0, 12)), rng));
+      paths.push_back(randomWalk(space, a, static_cast<int>(rng.uniformInt(0, max_steps)), rng));
       table.insert(a, paths.back());
     }
     // Remove and re-insert one agent: the index must forget its old entries.
@@ -52,6 +56,7 @@ TEST(SoftPathTable, PartnersAgreeWithConflictingPairs) {
     pairs_seen += static_cast<int>(from_table.size());
   }
   EXPECT_GT(pairs_seen, 50) << "the walks should collide often enough to test something";
+  }
 }
 
 // The agents met while holding a state from step t on (the soft search's goal test) are those

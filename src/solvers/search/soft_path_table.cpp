@@ -23,8 +23,19 @@ SoftPathTable::SoftPathTable(const SearchSpace& space)
       paths_(space.numAgents()),
       parked_(buckets_),
       cell_spans_(static_cast<std::size_t>(width_) * height_),
+      cell_blocks_(cell_spans_.size(), 0),
       agent_runs_(space.numAgents()),
       stamp_(space.numAgents(), 0) {}
+
+std::uint64_t SoftPathTable::blockOf(int t) {
+  return std::uint64_t{1} << std::min(t / kBlockSteps, 63);
+}
+
+std::uint64_t SoftPathTable::blocksOf(int first, int last) {
+  const int b0 = std::min(first / kBlockSteps, 63), b1 = std::min(last / kBlockSteps, 63);
+  const std::uint64_t upto = b1 == 63 ? ~std::uint64_t{0} : (std::uint64_t{1} << (b1 + 1)) - 1;
+  return upto & ~((std::uint64_t{1} << b0) - 1);
+}
 
 SoftPathTable::Bucket SoftPathTable::bucketsOf(const CellSet& set, Cell origin) const {
   auto clampX = [&](int x) { return std::clamp(x, 0, width_ - 1) / kBucketCells; };
@@ -68,11 +79,14 @@ void SoftPathTable::index(int a, bool on) {
     std::vector<Span>& spans = cell_spans_[cell];
     if (!on) {
       touched.push_back(cell);
-    } else if (!spans.empty() && spans.back().agent == a && spans.back().last == t - 1) {
+      return;
+    }
+    if (!spans.empty() && spans.back().agent == a && spans.back().last == t - 1) {
       spans.back().last = last;
     } else {
       spans.push_back({t, last, a});
     }
+    cell_blocks_[cell] |= blocksOf(t, last);
   };
   for (int t = 0; t + 1 < static_cast<int>(path.size()); ++t) {
     const GridPose p = g.pose(path[t]);
@@ -100,6 +114,9 @@ void SoftPathTable::index(int a, bool on) {
     std::vector<Span>& spans = cell_spans_[cell];
     spans.erase(std::remove_if(spans.begin(), spans.end(), [a](const Span& r) { return r.agent == a; }),
                 spans.end());
+    std::uint64_t blocks = 0;
+    for (const Span& r : spans) blocks |= blocksOf(r.first, r.last);
+    cell_blocks_[cell] = blocks;
   }
 }
 
@@ -150,7 +167,9 @@ void SoftPathTable::collisions(int a, StateId s, Action action, int t,
   const GridPose p = space_.graph(a).pose(s);
   // Every agent whose sweep during step t (its body, once it has ended) meets a's sweep covers
   // a cell of a's probe during t.
+  const std::uint64_t block = blockOf(t);
   forCells(space_.probe(a, p.heading, action), {p.x, p.y}, [&](int cell) {
+    if (!(cell_blocks_[cell] & block)) return;
     for (const Span& r : cell_spans_[cell]) {
       if (r.first <= t && t <= r.last && firstVisit(r.agent)) out.push_back(r.agent);
     }

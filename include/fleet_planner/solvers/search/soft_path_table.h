@@ -91,6 +91,14 @@ class SoftPathTable {
     int agent;
   };
   std::vector<std::vector<Span>> cell_spans_;
+  // Per map cell, the blocks of kBlockSteps steps that some span of it touches (bit b: steps
+  // b * kBlockSteps to b * kBlockSteps + kBlockSteps - 1; the last bit: that block and every
+  // later step). A step query (collisions) skips a cell whose bit is clear without reading its
+  // spans: most cells of a probe are swept at other times.
+  static constexpr int kBlockSteps = 16;
+  static std::uint64_t blocksOf(int first, int last);
+  static std::uint64_t blockOf(int t);
+  std::vector<std::uint64_t> cell_blocks_;
   mutable std::vector<std::vector<std::pair<int, int>>> agent_runs_;  // unsafeRuns' scratch
   mutable std::vector<int> met_;                                     // its agents
   mutable std::vector<std::uint32_t> stamp_;  // dedup of query results
