@@ -5,6 +5,7 @@
 #include <exception>
 #include <utility>
 
+#include "fleet_planner/io/instance_generator.h"
 #include "fleet_planner/io/instance_io.h"
 #include "fleet_planner/io/map_io.h"
 
@@ -33,6 +34,26 @@ Problem* problem(const std::string& name, int k, std::string& error) {
     auto p = std::make_unique<Problem>();
     p->map = loadMap(dir + "/maps/" + name + ".map");
     p->instance = selectMixed(loadInstance(dir + "/instances/" + name + "_la.txt"), k);
+    slot = std::move(p);
+    return slot.get();
+  } catch (const std::exception& e) {
+    error = std::string(e.what()) + " (benchmark folder " + dir + "; set FLEET_PLANNER_BENCHMARK)";
+    return nullptr;
+  }
+}
+
+Problem* generatedProblem(const std::string& name, int robots, unsigned seed, std::string& error) {
+  static std::map<std::pair<std::string, std::pair<int, unsigned>>, std::unique_ptr<Problem>> cache;
+  auto& slot = cache[{name, {robots, seed}}];
+  if (slot) return slot.get();
+  const std::string dir = benchmarkDir();
+  try {
+    auto p = std::make_unique<Problem>();
+    p->map = loadMap(dir + "/maps/" + name + ".map");
+    GeneratorOptions options;
+    options.robots = robots;
+    options.seed = seed;
+    p->instance = generateInstance(p->map, options);
     slot = std::move(p);
     return slot.get();
   } catch (const std::exception& e) {

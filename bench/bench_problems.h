@@ -13,7 +13,7 @@ namespace fleet_planner::bench {
 
 struct Problem {
   GridMap map;
-  Instance instance;  ///< the pool's "K mixed" robots
+  Instance instance;  ///< the pool's "K mixed" robots, or a generated fleet
   std::unique_ptr<FleetGraphs> graphs;  ///< built on first use by graphs()
   const FleetGraphs& fleetGraphs();
 };
@@ -24,5 +24,9 @@ std::string benchmarkDir();
 /// Map `name` with the "K mixed" robots of its pool; nullptr (and `error` set) if the files are
 /// missing or unreadable, so that the benchmark can skip with that message.
 Problem* problem(const std::string& name, int k, std::string& error);
+
+/// Map `name` with `robots` robots of the paper's distribution (generateInstance with `seed`,
+/// the CLI's `generate`), cached like problem().
+Problem* generatedProblem(const std::string& name, int robots, unsigned seed, std::string& error);
 
 }  // namespace fleet_planner::bench

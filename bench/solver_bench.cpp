@@ -28,9 +28,7 @@ Subproblem wholeFleet(Problem& p, long long budget) {
 
 /// LA-LaCAM for 20,000 configuration steps (one PIBT step each): `configs/s` counts the new
 /// configurations, `steps/s` every step (revisits included).
-void BM_LaLacamConfigurations(benchmark::State& state, const char* map) {
-  std::string error;
-  Problem* p = problem(map, static_cast<int>(state.range(0)), error);
+void lacamConfigurations(benchmark::State& state, Problem* p, const std::string& error) {
   if (p == nullptr) return state.SkipWithError(error.c_str());
   const Subproblem sub = wholeFleet(*p, 20000), setup = wholeFleet(*p, 0);
   long long configs = 0, steps = 0;
@@ -51,9 +49,24 @@ void BM_LaLacamConfigurations(benchmark::State& state, const char* map) {
   state.counters["steps/s"] = benchmark::Counter(static_cast<double>(steps), benchmark::Counter::kIsRate);
   state.SetLabel(outcome);
 }
+
+void BM_LaLacamConfigurations(benchmark::State& state, const char* map) {
+  std::string error;
+  Problem* p = problem(map, static_cast<int>(state.range(0)), error);
+  lacamConfigurations(state, p, error);
+}
+
+/// The same on a generated fleet (`fleet_planner_cli generate --seed 1`): the size of the city
+/// fleets that the pools do not reach.
+void BM_LaLacamConfigurationsGenerated(benchmark::State& state, const char* map) {
+  std::string error;
+  Problem* p = generatedProblem(map, static_cast<int>(state.range(0)), 1, error);
+  lacamConfigurations(state, p, error);
+}
 BENCHMARK_CAPTURE(BM_LaLacamConfigurations, maze-128-128-10, "maze-128-128-10")->Arg(50)->UseManualTime()->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_LaLacamConfigurations, Paris_1_256, "Paris_1_256")->Arg(140)->UseManualTime()->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_LaLacamConfigurations, AR0044SR, "AR0044SR")->Arg(100)->UseManualTime()->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_LaLacamConfigurationsGenerated, Paris_1_256, "Paris_1_256")->Arg(300)->UseManualTime()->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace fleet_planner::bench

@@ -45,6 +45,11 @@ class CellSet {
 
   /// True when `a` placed at cell `pa` and `b` placed at cell `pb` share a cell.
   static bool overlap(const CellSet& a, Cell pa, const CellSet& b, Cell pb) {
+    // Most pairs asked about are apart: their bounding boxes tell without a call.
+    if (a.max_x_ + pa.x < b.min_x_ + pb.x || b.max_x_ + pb.x < a.min_x_ + pa.x ||
+        a.max_y_ + pa.y < b.min_y_ + pb.y || b.max_y_ + pb.y < a.min_y_ + pa.y) {
+      return false;
+    }
     Cell unused;
     return commonCell(a, pa, b, pb, unused);
   }

@@ -95,8 +95,9 @@ class LacamSearch {
         open.push_back(pibt_.rng().uniform01() < options_.restart_rate ? 0 : known);
         continue;
       }
-      std::vector<float> p(priorities_.begin() + static_cast<std::ptrdiff_t>(id) * n_,
-                           priorities_.begin() + static_cast<std::ptrdiff_t>(id + 1) * n_);
+      std::vector<float>& p = priority_;
+      p.assign(priorities_.begin() + static_cast<std::ptrdiff_t>(id) * n_,
+               priorities_.begin() + static_cast<std::ptrdiff_t>(id + 1) * n_);
       // PIBT's priorities: agents away from their target gain one per step; arrived ones drop back.
       for (int a = 0; a < n_; ++a) p[a] = next[a] == goal[a] ? p[a] - static_cast<float>(static_cast<int>(p[a])) : p[a] + 1;
       open.push_back(addNode(next, id, p));
@@ -154,9 +155,23 @@ class LacamSearch {
     const int id = static_cast<int>(nodes_.size());
     configs_.insert(configs_.end(), config.begin(), config.end());
     priorities_.insert(priorities_.end(), priority.begin(), priority.end());
-    std::vector<int> order(n_);
-    for (int a = 0; a < n_; ++a) order[a] = a;
-    std::stable_sort(order.begin(), order.end(), [&](int x, int y) { return priority[x] > priority[y]; });
+    // Agents by priority, highest first, ties by agent: sorted by insertion from the parent's
+    // order, which the new priorities mostly keep.
+    std::vector<int>& order = order_;
+    if (parent < 0) {
+      order.resize(n_);
+      for (int a = 0; a < n_; ++a) order[a] = a;
+    } else {
+      order.assign(orders_.begin() + static_cast<std::ptrdiff_t>(parent) * n_,
+                   orders_.begin() + static_cast<std::ptrdiff_t>(parent + 1) * n_);
+    }
+    auto before = [&](int x, int y) { return priority[x] != priority[y] ? priority[x] > priority[y] : x < y; };
+    for (int i = 1; i < n_; ++i) {
+      const int agent = order[i];
+      int j = i;
+      for (; j > 0 && before(agent, order[j - 1]); --j) order[j] = order[j - 1];
+      order[j] = agent;
+    }
     orders_.insert(orders_.end(), order.begin(), order.end());
     nodes_.push_back(HighNode{parent, {LowNode{-1, -1, kNoState, 0}}, 0});
     ++live_low_;
@@ -171,9 +186,9 @@ class LacamSearch {
     StateChoices options = pibt_.candidates(agent, current[agent]);
     // Shuffle with the seed (Fisher-Yates) so that no direction is always tried first.
     for (int i = options.size(); i > 1; --i) {
-      std::swap(options[i - 1], options[static_cast<int>(pibt_.rng().uniformInt(0, i - 1))]);
+      options.swap(i - 1, static_cast<int>(pibt_.rng().uniformInt(0, i - 1)));
     }
-    for (StateId s : options) nodes_[id].tree.push_back({low, agent, s, depth + 1});
+    for (int i = 0; i < options.size(); ++i) nodes_[id].tree.push_back({low, agent, options[i], depth + 1});
     live_low_ += static_cast<long long>(options.size());
   }
 
@@ -219,7 +234,8 @@ class LacamSearch {
   std::vector<StateId> configs_;
   std::vector<int> orders_;
   std::vector<float> priorities_;
-  std::vector<int> order_;
+  std::vector<int> order_;        // scratch: an agent order
+  std::vector<float> priority_;   // scratch: a node's priorities
   std::vector<int> table_;
   long long live_low_ = 0;
   bool out_of_memory_ = false;

@@ -1,6 +1,7 @@
 #include "fleet_planner/solvers/lacam/la_pibt.h"
 
 #include <algorithm>
+#include <memory>
 
 #include "fleet_planner/model/collision.h"
 #include "fleet_planner/solvers/search/space_time_astar.h"
@@ -22,80 +23,111 @@ void sortFew(Array& items, int n, Less less) {
 LaPibt::LaPibt(const SearchSpace& space, std::uint64_t seed, bool remember_escapes)
     : space_(space),
       rng_(seed),
-      reach_(space.numAgents()),
-      stamp_(space.numAgents(), 0),
-      chosen_(space.numAgents()),
+      seen_agent_(space.numAgents(), 0),
       assigned_(space.numAgents()),
       remember_escapes_(remember_escapes) {
   if (space.numAgents() == 0) return;
-  bx_ = (space.graph(0).width() + kBucketCells - 1) / kBucketCells;
-  by_ = (space.graph(0).height() + kBucketCells - 1) / kBucketCells;
-  near_.resize(static_cast<std::size_t>(bx_) * by_);
+  width_ = space.graph(0).width();
+  height_ = space.graph(0).height();
+  // The cells fits() reads: the contact probe of each sweep (it meets every body or sweep that
+  // the sweep meets) without the mover's own footprint, which no other claim covers. Agents
+  // with the same cells share them.
+  std::unordered_map<const FootprintCells*, std::shared_ptr<const Ahead>> made;
+  ahead_.resize(space.numAgents());
   for (int a = 0; a < space.numAgents(); ++a) {
-    int r = 0;
-    while (r * r < space.cells(a).maxNormSq()) ++r;
-    reach_[a] = r;
-  }
-}
-
-void LaPibt::indexNear(const Config& current) {
-  for (int bucket : filled_) near_[bucket].clear();
-  filled_.clear();
-  for (int b = 0; b < space_.numAgents(); ++b) {
-    const GridPose q = space_.graph(b).pose(current[b]);
-    const int r = reach_[b];
-    for (int y = bucketY(q.y - r); y <= bucketY(q.y + r); ++y) {
-      for (int x = bucketX(q.x - r); x <= bucketX(q.x + r); ++x) {
-        std::vector<int>& agents = near_[y * bx_ + x];
-        if (agents.empty()) filled_.push_back(y * bx_ + x);
-        agents.push_back(b);
+    std::shared_ptr<const Ahead>& sets = made[&space.cells(a)];
+    if (!sets) {
+      auto fresh = std::make_shared<Ahead>();
+      for (int h = 0; h < kHeadings; ++h) {
+        const CellSet& body = space.cells(a).body(h);
+        for (int act = 0; act < kActions; ++act) {
+          std::vector<Cell> cells;
+          for (const Cell& c : space.probe(a, h, static_cast<Action>(act)).cells()) {
+            if (!body.contains(c.x, c.y)) cells.push_back(c);
+          }
+          (*fresh)[h][act] = CellSet::fromCells(std::move(cells));
+        }
       }
+      sets = std::move(fresh);
     }
+    ahead_[a] = sets;
   }
+  moving_.assign(static_cast<std::size_t>(width_) * height_, 0);
+  standing_.assign(moving_.size(), -1);
+  placed_.assign(space.numAgents(), kNoState);
 }
 
 template <class F>
-void LaPibt::forNear(int a, const CellSet& set, Cell origin, F&& f) const {
-  if (set.empty()) return;
-  if (++query_ == 0) {  // wrapped: forget every stamp
-    std::fill(stamp_.begin(), stamp_.end(), 0);
-    query_ = 1;
+void LaPibt::forCells(const CellSet& set, const GridPose& p, F&& f) const {
+  for (const CellSet::Run& r : set.runs()) {
+    const int y = p.y + r.dy;
+    if (y < 0 || y >= height_) continue;
+    const std::size_t row = static_cast<std::size_t>(y) * width_;
+    const int x0 = std::max(p.x + r.x0, 0), x1 = std::min(p.x + r.x1, width_ - 1);
+    for (int x = x0; x <= x1; ++x) f(row + x);
   }
-  stamp_[a] = query_;
-  for (int y = bucketY(origin.y + set.minY()); y <= bucketY(origin.y + set.maxY()); ++y) {
-    for (int x = bucketX(origin.x + set.minX()); x <= bucketX(origin.x + set.maxX()); ++x) {
-      for (int b : near_[y * bx_ + x]) {
-        if (stamp_[b] == query_) continue;
-        stamp_[b] = query_;
-        f(b);
-      }
+}
+
+void LaPibt::claim(int a, const CellSet& set, const GridPose& p) {
+  const std::uint64_t tag = (static_cast<std::uint64_t>(step_) << 32) | static_cast<std::uint32_t>(a);
+  forCells(set, p, [&](std::size_t cell) { moving_[cell] = tag; });
+}
+
+void LaPibt::claimFootprints(const Config& current) {
+  if (++step_ == 0) {  // wrapped: forget every claim
+    std::fill(moving_.begin(), moving_.end(), 0);
+    step_ = 1;
+  }
+  // Consecutive configurations differ in a few agents: only their footprints are moved. A cell
+  // is cleared only if it still names the agent (another may have stepped there already).
+  for (int b = 0; b < space_.numAgents(); ++b) {
+    if (placed_[b] == current[b]) continue;
+    const StateGraph& g = space_.graph(b);
+    if (placed_[b] != kNoState) {
+      const GridPose old = g.pose(placed_[b]);
+      forCells(space_.cells(b).body(old.heading), old, [&](std::size_t cell) {
+        if (standing_[cell] == b) standing_[cell] = -1;
+      });
     }
+    const GridPose q = g.pose(current[b]);
+    forCells(space_.cells(b).body(q.heading), q, [&](std::size_t cell) { standing_[cell] = b; });
+    placed_[b] = current[b];
   }
 }
 
 StateChoices LaPibt::candidates(int a, StateId s) const {
   StateChoices out;
-  out.push(s);
+  out.push(s, Action::Wait);
   space_.graph(a).forEachSuccessor(s, [&](Action action, StateId next) {
-    if (space_.distance(a, next) >= 0 && space_.allows(a, s, action)) out.push(next);
+    if (space_.distance(a, next) >= 0 && space_.allows(a, s, action)) out.push(next, action);
   });
   return out;
 }
 
-bool LaPibt::fits(int a, StateId from, Action action, const Config& current, std::vector<int>* in_way) const {
+bool LaPibt::fits(int a, StateId from, Action action, std::vector<int>* in_way) const {
   const GridPose p = space_.graph(a).pose(from);
-  const FootprintCells& cells = space_.cells(a);
+  if (++agent_query_ == 0) {  // wrapped: forget every stamp
+    std::fill(seen_agent_.begin(), seen_agent_.end(), 0);
+    agent_query_ = 1;
+  }
   bool clear = true;
-  forNear(a, cells.swept(p.heading, action), {p.x, p.y}, [&](int b) {
-    if (!clear && (in_way == nullptr || assigned_[b])) return;
-    const GridPose q = space_.graph(b).pose(current[b]);
-    // An agent still to move sweeps at least its current footprint, whatever it does.
-    const Action other = assigned_[b] ? chosen_[b] : Action::Wait;
-    if (!sweepsOverlap(cells, p, action, space_.cells(b), q, other)) return;
-    clear = false;
-    if (in_way != nullptr && !assigned_[b]) in_way->push_back(b);
-  });
-  if (in_way != nullptr) std::sort(in_way->begin(), in_way->end());  // agent order, whatever the buckets' order
+  for (const CellSet::Run& r : (*ahead_[a])[p.heading][static_cast<int>(action)].runs()) {
+    const int y = p.y + r.dy;
+    if (y < 0 || y >= height_) continue;
+    const std::size_t row = static_cast<std::size_t>(y) * width_;
+    const int x0 = std::max(p.x + r.x0, 0), x1 = std::min(p.x + r.x1, width_ - 1);
+    for (int x = x0; x <= x1; ++x) {
+      const int b = ownerOf(row + x);
+      if (b < 0 || b == a) continue;
+      clear = false;
+      if (in_way == nullptr) return false;
+      if (!assigned_[b] && seen_agent_[b] != agent_query_) {
+        seen_agent_[b] = agent_query_;
+        in_way->push_back(b);
+      }
+    }
+  }
+  if (in_way != nullptr) std::sort(in_way->begin(), in_way->end());  // agent order, whatever the cells' order
   return clear;
 }
 
@@ -127,7 +159,7 @@ StateChoices LaPibt::escapeSteps(int a, StateId from, const CellSet& sweep, Cell
     if (!space_.allows(a, from, action)) return;
     depth_of_first[firsts.size()] = -1;
     queue.push_back({next, firsts.size(), 1});
-    firsts.push(next);
+    firsts.push(next, action);
     firstSeen(next);
   });
   int found_depth = -1;
@@ -151,7 +183,7 @@ StateChoices LaPibt::escapeSteps(int a, StateId from, const CellSet& sweep, Cell
   }
   sortFew(order, found, [&](int x, int y) { return depth_of_first[x] < depth_of_first[y]; });
   StateChoices result;
-  for (int i = 0; i < found; ++i) result.push(firsts[order[i]]);
+  for (int i = 0; i < found; ++i) result.push(firsts[order[i]], firsts.action(order[i]));
   return result;
 }
 
@@ -172,7 +204,6 @@ StateChoices LaPibt::cachedEscape(int a, StateId from, int pusher, StateId pushe
 
 bool LaPibt::assign(int a, const Config& current, Config& next, int pusher, StateId avoid) {
   assigned_[a] = true;
-  chosen_[a] = Action::Wait;  // while deciding, a counts as waiting for the others
   next[a] = current[a];
   StateChoices options;
   if (pusher >= 0) {
@@ -182,22 +213,28 @@ bool LaPibt::assign(int a, const Config& current, Config& next, int pusher, Stat
     options = cachedEscape(a, current[a], pusher, current[pusher], action);
   } else {
     // Best first by distance to the target; random tie-break from the seed.
-    options = candidates(a, current[a]);
-    std::array<std::pair<StateId, std::uint64_t>, kActions> ranked;
-    for (int i = 0; i < options.size(); ++i) ranked[i] = {options[i], rng_.next()};
-    sortFew(ranked, options.size(), [&](const auto& x, const auto& y) {
-      const int dx = space_.distance(a, x.first), dy = space_.distance(a, y.first);
-      return dx != dy ? dx < dy : x.second < y.second;
+    const StateChoices all = candidates(a, current[a]);
+    struct Ranked {
+      int distance;
+      std::uint64_t tie;
+      int index;
+    };
+    std::array<Ranked, kActions> ranked;
+    for (int i = 0; i < all.size(); ++i) ranked[i] = {space_.distance(a, all[i]), rng_.next(), i};
+    sortFew(ranked, all.size(), [](const Ranked& x, const Ranked& y) {
+      return x.distance != y.distance ? x.distance < y.distance : x.tie < y.tie;
     });
-    for (int i = 0; i < options.size(); ++i) options[i] = ranked[i].first;
+    for (int i = 0; i < all.size(); ++i) options.push(all[ranked[i].index], all.action(ranked[i].index));
   }
-  for (const StateId s : options) {
-    if (s == current[a]) return pusher < 0;  // waiting is the best it can do
-    const Action action = stepAction(space_.graph(a), current[a], s);
+  for (int i = 0; i < options.size(); ++i) {
+    const StateId s = options[i];
+    const Action action = options.action(i);
+    if (action == Action::Wait) return pusher < 0;  // waiting is the best it can do
     std::vector<int> in_way;
-    if (fits(a, current[a], action, current, &in_way)) {
+    if (fits(a, current[a], action, &in_way)) {
       next[a] = s;
-      chosen_[a] = action;
+      const GridPose p = space_.graph(a).pose(current[a]);
+      claim(a, space_.cells(a).swept(p.heading, action), p);
       return true;
     }
     // Blocked: if only agents still to move are in the way, ask them to clear, and wait.
@@ -216,12 +253,13 @@ bool LaPibt::generate(const Config& current, const std::vector<std::pair<int, St
   const int n = space_.numAgents();
   next.assign(n, kNoState);
   std::fill(assigned_.begin(), assigned_.end(), false);
-  indexNear(current);
+  claimFootprints(current);
   for (const auto& [a, s] : fixed) {
     const Action action = stepAction(space_.graph(a), current[a], s);
-    if (assigned_[a] || !fits(a, current[a], action, current)) return false;
+    if (assigned_[a] || !fits(a, current[a], action)) return false;
     next[a] = s;
-    chosen_[a] = action;
+    const GridPose p = space_.graph(a).pose(current[a]);
+    claim(a, space_.cells(a).swept(p.heading, action), p);
     assigned_[a] = true;
   }
   for (int a : order) {

@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <unordered_map>
 #include <vector>
 
@@ -23,18 +24,26 @@ namespace fleet_planner {
 
 using Config = std::vector<StateId>;
 
-/// At most kActions states of one agent (waiting and each action's result), kept in place: the
-/// configuration step builds thousands of these a second and allocates none of them.
+/// At most kActions states of one agent (waiting and each action's result), each with the
+/// action that leads there, kept in place: the configuration step builds thousands of these a
+/// second and allocates none of them.
 class StateChoices {
  public:
-  void push(StateId s) { items_[size_++] = s; }
+  void push(StateId s, Action action) {
+    states_[size_] = s;
+    actions_[size_++] = action;
+  }
   int size() const { return size_; }
-  StateId& operator[](int i) { return items_[i]; }
-  const StateId* begin() const { return items_.data(); }
-  const StateId* end() const { return items_.data() + size_; }
+  StateId operator[](int i) const { return states_[i]; }
+  Action action(int i) const { return actions_[i]; }
+  void swap(int i, int j) {
+    std::swap(states_[i], states_[j]);
+    std::swap(actions_[i], actions_[j]);
+  }
 
  private:
-  std::array<StateId, kActions> items_{};
+  std::array<StateId, kActions> states_{};
+  std::array<Action, kActions> actions_{};
   int size_ = 0;
 };
 
@@ -55,20 +64,14 @@ class LaPibt {
   Rng& rng() { return rng_; }
 
  private:
-  // Buckets of kBucketCells x kBucketCells map cells, each listing the agents that could sweep
-  // one of its cells in the next step from their current state, built once per configuration:
-  // fits() then checks the agents near a motion, not the whole fleet.
-  void indexNear(const Config& current);
-  // Calls f(b) once for every agent other than a that may sweep a cell of `set` at `origin`.
-  template <class F>
-  void forNear(int a, const CellSet& set, Cell origin, F&& f) const;
-  // Bucket column (row) of map column x (row y), clamped to the map's buckets.
-  int bucketX(int x) const { return std::clamp(x / kBucketCells, 0, bx_ - 1); }
-  int bucketY(int y) const { return std::clamp(y / kBucketCells, 0, by_ - 1); }
-  // a doing `action` from `from` meets no agent's sweep: the chosen one of an assigned agent,
-  // at least the current footprint of the others. With `in_way`, the agents still to move that
+  // Marks the cells of `set` at pose p as claimed by agent a this step.
+  void claim(int a, const CellSet& set, const GridPose& p);
+  // Starts a step: every agent claims its current footprint (moved from the last step's).
+  void claimFootprints(const Config& current);
+  // a doing `action` from `from` meets no agent's claim: the sweep of an assigned agent's
+  // motion, the current footprint of the others. With `in_way`, the agents still to move that
   // it meets, in agent order.
-  bool fits(int a, StateId from, Action action, const Config& current, std::vector<int>* in_way = nullptr) const;
+  bool fits(int a, StateId from, Action action, std::vector<int>* in_way = nullptr) const;
   // Assigns agent a (and, through pushes, agents blocking it). `avoid`: the state the pusher
   // wants next (kNoState: none), `pusher` its agent; a must end clear of the pusher's sweep to
   // it. Returns false if a could not.
@@ -82,16 +85,31 @@ class LaPibt {
   static constexpr int kEscapeDepth = 8;
   static constexpr std::size_t kEscapeStates = 4096;  // bound on one escape search
 
-  static constexpr int kBucketCells = 8;
-
   const SearchSpace& space_;
   Rng rng_;
-  int bx_ = 1, by_ = 1;                      // buckets per row, rows
-  std::vector<int> reach_;                   // per agent: cells any sweep reaches from the pose cell
-  std::vector<std::vector<int>> near_;       // bucket -> agents
-  std::vector<int> filled_;                  // buckets with agents (to clear them)
-  mutable std::vector<std::uint32_t> stamp_;  // dedup of forNear
-  mutable std::uint32_t query_ = 0;
+  // What each map cell is claimed by this step: the sweep of an assigned agent's motion
+  // (moving_, as (step_ << 32) | agent; an entry of an earlier step is nobody's), else the
+  // footprint of the agent standing there in the configuration (standing_, -1: none). Claims
+  // never overlap (a motion is taken only where it fits, and every action sweeps the mover's
+  // footprint), so a cell has one owner, and fits() reads the cells of one sweep instead of
+  // comparing agents.
+  int width_ = 0, height_ = 0;
+  std::vector<std::uint64_t> moving_;
+  std::uint32_t step_ = 0;
+  std::vector<int> standing_;
+  Config placed_;  // the states whose footprints standing_ holds
+  int ownerOf(std::size_t cell) const {
+    const std::uint64_t m = moving_[cell];
+    return (m >> 32) == step_ ? static_cast<int>(m & 0xffffffffu) : standing_[cell];
+  }
+  // Per agent, heading and action: the cells fits() reads (see the constructor).
+  using Ahead = std::array<std::array<CellSet, kActions>, kHeadings>;
+  std::vector<std::shared_ptr<const Ahead>> ahead_;
+  // Calls f(cell index) for every map cell of `set` placed at p.
+  template <class F>
+  void forCells(const CellSet& set, const GridPose& p, F&& f) const;
+  mutable std::vector<std::uint32_t> seen_agent_;  // dedup of fits()' agents in the way
+  mutable std::uint32_t agent_query_ = 0;
   // escapeSteps' scratch: the breadth-first queue and the stamps of the states it has seen.
   struct EscapeItem {
     StateId s;
@@ -111,7 +129,6 @@ class LaPibt {
 
   mutable std::vector<std::uint32_t> seen_;
   mutable std::uint32_t seen_query_ = 0;
-  std::vector<Action> chosen_;  // action of each assigned agent this step
   std::vector<bool> assigned_;  // assigned, or being assigned (then counted as waiting)
   bool remember_escapes_;
 };
