@@ -13,17 +13,28 @@
 namespace fleet_planner::test {
 namespace {
 
+// `robots` generated robots on a free square map of `side` cells: their search space and starts.
+struct Fleet {
+  Fleet(int side, int robots, std::uint64_t seed)
+      : world(freeMap(side, side), generatedRobots(freeMap(side, side), robots, seed)),
+        sub(allRobots(world)),
+        space(sub) {
+    for (int a = 0; a < space.numAgents(); ++a) start.push_back(space.start(a));
+  }
+  World world;
+  Subproblem sub;
+  SearchSpace space;
+  Config start;
+};
+
 TEST(LaPibt, GeneratedStepsHaveNoConflicts) {
   int moves = 0, near_pairs = 0;
   for (std::uint64_t seed = 0; seed < 6; ++seed) {
-    const GridMap map = freeMap(36, 36);
-    const World w(map, generatedRobots(map, 40, seed));
-    const Subproblem sub = allRobots(w);
-    const SearchSpace space(sub);
+    const Fleet fleet(36, 40, seed);
+    const SearchSpace& space = fleet.space;
     LaPibt pibt(space, seed);
     const int n = space.numAgents();
-    Config current(n), next;
-    for (int a = 0; a < n; ++a) current[a] = space.start(a);
+    Config current = fleet.start, next;
     std::vector<int> order(n);
     std::iota(order.begin(), order.end(), 0);
     for (int step = 0; step < 60; ++step) {
@@ -56,14 +67,11 @@ TEST(LaPibt, GeneratedStepsHaveNoConflicts) {
 TEST(LaPibt, RememberedEscapesGiveTheSameStepsAsFreshSearches) {
   int differing_orders = 0, moves = 0;
   for (std::uint64_t seed = 0; seed < 4; ++seed) {
-    const GridMap map = freeMap(28, 28);
-    const World w(map, generatedRobots(map, 30, seed));
-    const Subproblem sub = allRobots(w);
-    const SearchSpace space(sub);
+    const Fleet fleet(28, 30, seed);
+    const SearchSpace& space = fleet.space;
     LaPibt remembering(space, seed), fresh(space, seed, /*remember_escapes=*/false);
     const int n = space.numAgents();
-    Config current(n), next, expected;
-    for (int a = 0; a < n; ++a) current[a] = space.start(a);
+    Config current = fleet.start, next, expected;
     std::vector<int> order(n);
     std::iota(order.begin(), order.end(), 0);
     Rng shuffle(seed);
@@ -77,7 +85,7 @@ TEST(LaPibt, RememberedEscapesGiveTheSameStepsAsFreshSearches) {
       // Now and then back to the start, so that the same situations come again.
       current = next;
       if (step % 25 == 24) {
-        for (int a = 0; a < n; ++a) current[a] = space.start(a);
+        current = fleet.start;
       }
     }
   }
@@ -91,15 +99,12 @@ TEST(LaPibt, RememberedEscapesGiveTheSameStepsAsFreshSearches) {
 TEST(LaPibt, AGeneratorKeptAcrossConfigurationsGivesTheSameStepsAsANewOne) {
   int moves = 0, jumps = 0;
   for (std::uint64_t seed = 0; seed < 4; ++seed) {
-    const GridMap map = freeMap(40, 40);
-    const World w(map, generatedRobots(map, 40, seed));
-    const Subproblem sub = allRobots(w);
-    const SearchSpace space(sub);
+    const Fleet fleet(40, 40, seed);
+    const SearchSpace& space = fleet.space;
     LaPibt kept(space, seed);
     const int n = space.numAgents();
-    Config start(n), next, expected;
-    for (int a = 0; a < n; ++a) start[a] = space.start(a);
-    std::vector<Config> made{start};
+    Config next, expected;
+    std::vector<Config> made{fleet.start};
     std::vector<int> order(n);
     std::iota(order.begin(), order.end(), 0);
     Rng pick(seed);
