@@ -2,7 +2,9 @@
 /// A finite set of cells relative to an origin cell, stored as horizontal runs sorted by row.
 /// Footprints and swept areas are CellSets; placing one at a cell and testing it against another
 /// placed elsewhere is a merge over the runs, with a bounding-box reject first.
+#include <algorithm>
 #include <cstddef>
+#include <type_traits>
 #include <vector>
 
 #include "fleet_planner/model/types.h"
@@ -45,11 +47,6 @@ class CellSet {
 
   /// True when `a` placed at cell `pa` and `b` placed at cell `pb` share a cell.
   static bool overlap(const CellSet& a, Cell pa, const CellSet& b, Cell pb) {
-    // Most pairs asked about are apart: their bounding boxes tell without a call.
-    if (a.max_x_ + pa.x < b.min_x_ + pb.x || b.max_x_ + pb.x < a.min_x_ + pa.x ||
-        a.max_y_ + pa.y < b.min_y_ + pb.y || b.max_y_ + pb.y < a.min_y_ + pa.y) {
-      return false;
-    }
     Cell unused;
     return commonCell(a, pa, b, pb, unused);
   }
@@ -65,5 +62,26 @@ class CellSet {
   int min_x_ = 0, max_x_ = 0, min_y_ = 0, max_y_ = 0;
   int max_norm_sq_ = 0;
 };
+
+/// Calls f(index) for each cell of `set` placed at `origin` that lies on a map of width x height
+/// cells (index = y * width + x), row by row. When f returns bool, false stops the walk and the
+/// result is false; otherwise the result is true.
+template <class F>
+bool forEachMapCell(const CellSet& set, Cell origin, int width, int height, F&& f) {
+  for (const CellSet::Run& r : set.runs()) {
+    const int y = origin.y + r.dy;
+    if (y < 0 || y >= height) continue;
+    const std::size_t row = static_cast<std::size_t>(y) * width;
+    const int x0 = std::max(origin.x + r.x0, 0), x1 = std::min(origin.x + r.x1, width - 1);
+    for (int x = x0; x <= x1; ++x) {
+      if constexpr (std::is_same_v<std::invoke_result_t<F&, std::size_t>, bool>) {
+        if (!f(row + x)) return false;
+      } else {
+        f(row + x);
+      }
+    }
+  }
+  return true;
+}
 
 }  // namespace fleet_planner

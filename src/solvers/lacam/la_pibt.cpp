@@ -57,20 +57,9 @@ LaPibt::LaPibt(const SearchSpace& space, std::uint64_t seed, bool remember_escap
   placed_.assign(space.numAgents(), kNoState);
 }
 
-template <class F>
-void LaPibt::forCells(const CellSet& set, const GridPose& p, F&& f) const {
-  for (const CellSet::Run& r : set.runs()) {
-    const int y = p.y + r.dy;
-    if (y < 0 || y >= height_) continue;
-    const std::size_t row = static_cast<std::size_t>(y) * width_;
-    const int x0 = std::max(p.x + r.x0, 0), x1 = std::min(p.x + r.x1, width_ - 1);
-    for (int x = x0; x <= x1; ++x) f(row + x);
-  }
-}
-
 void LaPibt::claim(int a, const CellSet& set, const GridPose& p) {
   const std::uint64_t tag = (static_cast<std::uint64_t>(step_) << 32) | static_cast<std::uint32_t>(a);
-  forCells(set, p, [&](std::size_t cell) { moving_[cell] = tag; });
+  forEachMapCell(set, {p.x, p.y}, width_, height_, [&](std::size_t cell) { moving_[cell] = tag; });
 }
 
 void LaPibt::claimFootprints(const Config& current) {
@@ -85,12 +74,14 @@ void LaPibt::claimFootprints(const Config& current) {
     const StateGraph& g = space_.graph(b);
     if (placed_[b] != kNoState) {
       const GridPose old = g.pose(placed_[b]);
-      forCells(space_.cells(b).body(old.heading), old, [&](std::size_t cell) {
-        if (standing_[cell] == b) standing_[cell] = -1;
-      });
+      forEachMapCell(space_.cells(b).body(old.heading), {old.x, old.y}, width_, height_,
+                     [&](std::size_t cell) {
+                       if (standing_[cell] == b) standing_[cell] = -1;
+                     });
     }
     const GridPose q = g.pose(current[b]);
-    forCells(space_.cells(b).body(q.heading), q, [&](std::size_t cell) { standing_[cell] = b; });
+    forEachMapCell(space_.cells(b).body(q.heading), {q.x, q.y}, width_, height_,
+                   [&](std::size_t cell) { standing_[cell] = b; });
     placed_[b] = current[b];
   }
 }
@@ -111,22 +102,18 @@ bool LaPibt::fits(int a, StateId from, Action action, std::vector<int>* in_way) 
     agent_query_ = 1;
   }
   bool clear = true;
-  for (const CellSet::Run& r : (*ahead_[a])[p.heading][static_cast<int>(action)].runs()) {
-    const int y = p.y + r.dy;
-    if (y < 0 || y >= height_) continue;
-    const std::size_t row = static_cast<std::size_t>(y) * width_;
-    const int x0 = std::max(p.x + r.x0, 0), x1 = std::min(p.x + r.x1, width_ - 1);
-    for (int x = x0; x <= x1; ++x) {
-      const int b = ownerOf(row + x);
-      if (b < 0 || b == a) continue;
-      clear = false;
-      if (in_way == nullptr) return false;
-      if (!assigned_[b] && seen_agent_[b] != agent_query_) {
-        seen_agent_[b] = agent_query_;
-        in_way->push_back(b);
-      }
-    }
-  }
+  forEachMapCell((*ahead_[a])[p.heading][static_cast<int>(action)], {p.x, p.y}, width_, height_,
+                 [&](std::size_t cell) {
+                   const int b = ownerOf(cell);
+                   if (b < 0 || b == a) return true;
+                   clear = false;
+                   if (in_way == nullptr) return false;  // one is enough
+                   if (!assigned_[b] && seen_agent_[b] != agent_query_) {
+                     seen_agent_[b] = agent_query_;
+                     in_way->push_back(b);
+                   }
+                   return true;
+                 });
   if (in_way != nullptr) std::sort(in_way->begin(), in_way->end());  // agent order, whatever the cells' order
   return clear;
 }

@@ -53,16 +53,6 @@ void SoftPathTable::forBuckets(const CellSet& set, Cell origin, F&& f) const {
   }
 }
 
-template <class F>
-void SoftPathTable::forCells(const CellSet& set, Cell origin, F&& f) const {
-  for (const CellSet::Run& r : set.runs()) {
-    const int y = origin.y + r.dy;
-    if (y < 0 || y >= height_) continue;
-    const int x0 = std::max(origin.x + r.x0, 0), x1 = std::min(origin.x + r.x1, width_ - 1);
-    for (int x = x0; x <= x1; ++x) f(y * width_ + x);
-  }
-}
-
 void SoftPathTable::index(int a, bool on) {
   const StatePath& path = paths_[a];
   const StateGraph& g = space_.graph(a);
@@ -101,13 +91,13 @@ void SoftPathTable::index(int a, bool on) {
       }
       if (motions.empty()) moving_.erase(key(t, bucket));
     });
-    forCells(swept, {p.x, p.y}, [&](int cell) { span(cell, t, t); });
+    forEachMapCell(swept, {p.x, p.y}, width_, height_, [&](int cell) { span(cell, t, t); });
   }
   const GridPose end = g.pose(path.back());
   const CellSet& body = space_.cells(a).body(end.heading);
   forBuckets(body, {end.x, end.y}, [&](int bucket) { edit(parked_[bucket]); });
   const int parked_from = static_cast<int>(path.size()) - 1;
-  forCells(body, {end.x, end.y}, [&](int cell) { span(cell, parked_from, kNever); });
+  forEachMapCell(body, {end.x, end.y}, width_, height_, [&](int cell) { span(cell, parked_from, kNever); });
   std::sort(touched.begin(), touched.end());
   touched.erase(std::unique(touched.begin(), touched.end()), touched.end());
   for (int cell : touched) {
@@ -168,7 +158,7 @@ void SoftPathTable::collisions(int a, StateId s, Action action, int t,
   // Every agent whose sweep during step t (its body, once it has ended) meets a's sweep covers
   // a cell of a's probe during t.
   const std::uint64_t block = blockOf(t);
-  forCells(space_.probe(a, p.heading, action), {p.x, p.y}, [&](int cell) {
+  forEachMapCell(space_.probe(a, p.heading, action), {p.x, p.y}, width_, height_, [&](int cell) {
     if (!(cell_blocks_[cell] & block)) return;
     for (const Span& r : cell_spans_[cell]) {
       if (r.first <= t && t <= r.last && firstVisit(r.agent)) out.push_back(r.agent);
@@ -213,7 +203,7 @@ void SoftPathTable::unsafeRuns(int a, StateId s, Action action,
   // Neighbouring cells mostly hold the same pass of an agent, give or take a step: the spans
   // of each agent are merged as they come, so the caller sorts one run per pass, not per cell.
   // The probe of the sweep meets every agent's sweep (or body) the sweep meets.
-  forCells(space_.probe(a, p.heading, action), {p.x, p.y}, [&](int cell) {
+  forEachMapCell(space_.probe(a, p.heading, action), {p.x, p.y}, width_, height_, [&](int cell) {
     for (const Span& r : cell_spans_[cell]) {
       if (r.agent == a) continue;
       if (r.last == kNever) {

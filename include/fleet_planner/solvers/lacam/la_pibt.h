@@ -105,9 +105,6 @@ class LaPibt {
   // Per agent, heading and action: the cells fits() reads (see the constructor).
   using Ahead = std::array<std::array<CellSet, kActions>, kHeadings>;
   std::vector<std::shared_ptr<const Ahead>> ahead_;
-  // Calls f(cell index) for every map cell of `set` placed at p.
-  template <class F>
-  void forCells(const CellSet& set, const GridPose& p, F&& f) const;
   mutable std::vector<std::uint32_t> seen_agent_;  // dedup of fits()' agents in the way
   mutable std::uint32_t agent_query_ = 0;
   // escapeSteps' scratch: the breadth-first queue and the stamps of the states it has seen.

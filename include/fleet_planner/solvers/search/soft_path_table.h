@@ -59,9 +59,6 @@ class SoftPathTable {
   }
   template <class F>
   void forBuckets(const CellSet& set, Cell origin, F&& f) const;
-  // Calls f(cell index) for every map cell of `set` placed at `origin`.
-  template <class F>
-  void forCells(const CellSet& set, Cell origin, F&& f) const;
   // Adds (on = true) or removes the entries of a's path.
   void index(int a, bool on);
   // a doing `action` from pose p collides with b doing `b_action` from pose q in the same step.
