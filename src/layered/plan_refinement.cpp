@@ -8,6 +8,7 @@
 
 #include "fleet_planner/model/collision.h"
 #include "fleet_planner/solvers/search/agent_constraints.h"
+#include "fleet_planner/solvers/search/safe_interval_search.h"
 #include "fleet_planner/solvers/cbs/la_cbs.h"
 #include "fleet_planner/solvers/search/search_space.h"
 #include "fleet_planner/solvers/search/space_time_astar.h"
@@ -48,14 +49,15 @@ Path cheaperPath(const Instance& instance, const FleetGraphs& graphs, const std:
   if (space.stopped() || !space.problem().empty()) return {};  // stopped: the deadline passed
   lower_bound = space.distance(0, space.start(0));
   if (lower_bound >= cost) return {};
-  AgentConstraints bound;
-  bound.requireCostAtMost(cost - 1);
-  LowLevelOptions low;
-  low.max_nodes = options.max_nodes_per_search;
-  const LowLevelResult found = spaceTimeAStar(space, 0, bound, deadline, low);
+  // Safe intervals: a wait is one node, so a path that waits for others to pass costs a few
+  // expansions, and the bound (arrive before `cost`) ends the search soon when there is no
+  // cheaper path, where space-time A* must still try every step of every wait.
+  const SoftPathTable nobody(space);  // the others are the space's moving obstacles
+  const SafeIntervalResult found =
+      safeIntervalSearch(space, 0, nobody, deadline, options.max_nodes_per_search, cost - 1);
   expansions += found.expansions;
-  if (found.outcome != LowLevelResult::Outcome::Found) return {};
   Path path;
+  if (found.outcome != SafeIntervalResult::Outcome::Found) return path;
   for (StateId s : found.path) path.push_back(space.graph(0).pose(s));
   return path;
 }

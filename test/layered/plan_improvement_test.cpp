@@ -112,6 +112,37 @@ TEST(PlanRefinement, KeepsAPathThatOthersForce) {
   EXPECT_EQ(plan.paths[1], b);
 }
 
+TEST(PlanRefinement, FindsALongWaitInAFewNodes) {
+  // A corridor (row 0) with one side pocket above column 5. b stands in the corridor at column
+  // 5 until step 30, then backs into the pocket. a's given path waits 40 steps at its start
+  // (cost 50); the cheapest drives to column 4, waits there until b has gone and arrives at
+  // step 37. Refinement's search (safe intervals) takes the wait as one node, within a budget
+  // of nodes that a search over every step of the wait cannot cover. (b's own wait is not
+  // needed: in the same pass b then goes at once, and a later pass would let a go at once too.)
+  const GridMap map = test::mapFromRows({"...........", "@@@@@.@@@@@"});
+  const int up = headingUp();
+  ASSERT_GE(up, 0);
+  Instance in;
+  in.robots = {dot("a", {0, 0, 0}, {10, 0, 0}), dot("b", {5, 0, up}, {5, 1, up})};
+  std::vector<Action> waits_then_go(40, Action::Wait);
+  waits_then_go.insert(waits_then_go.end(), 10, Action::Forward);
+  std::vector<Action> b_actions(30, Action::Wait);
+  b_actions.push_back(Action::Forward);
+  Plan plan = planOf({pathOf({0, 0, 0}, waits_then_go), pathOf({5, 0, up}, b_actions)});
+  ASSERT_TRUE(validatePlan(map, in, plan).valid());
+  const FleetGraphs graphs(map, footprintsOf(in));
+  RefinementOptions options;
+  options.max_nodes_per_search = 100;
+  options.max_passes = 1;
+  options.group_size = 0;
+  const RefinementStats stats = refinePlan(in, graphs, plan.paths, Deadline::in(5), options);
+  const ValidationResult check = validatePlan(map, in, plan);
+  EXPECT_TRUE(check.valid()) << check.violation.message;
+  EXPECT_EQ(pathCost(plan.paths[0], in.robots[0].target), 37);
+  EXPECT_EQ(pathCost(plan.paths[1], in.robots[1].target), 1);
+  EXPECT_EQ(stats.soc_saved, 13 + 30);
+}
+
 // On seeded random instances, the layered planner with refinement and compression returns valid
 // plans whose SOC and makespan are never above those it returns without them.
 TEST(PlanImprovement, NeverWorseThanTheMergedPlan) {

@@ -192,6 +192,32 @@ TEST(SafeIntervalSearch, WaitsForAMovingObstacleShortOrLong) {
   }
 }
 
+// The same blocker, with a bound on the arrival: a bound at the earliest arrival finds it, one
+// step below answers NoPath, after fewer expansions than the unbounded search needs to arrive.
+TEST(SafeIntervalSearch, ArrivalBoundPrunesLaterArrivals) {
+  const int wait = 40, earliest = wait + 5;
+  const World w(freeMap(8, 1), {dot("blocker", {3, 0, 0}, {7, 0, 0}), dot("waiter", {0, 0, 0}, {6, 0, 0})});
+  Subproblem sub = allRobots(w);
+  sub.robots = {1};
+  MovingObstacle m;
+  m.robot = 0;
+  m.path.assign(static_cast<std::size_t>(wait) + 1, GridPose{3, 0, 0});
+  for (int x = 4; x <= 7; ++x) m.path.push_back({x, 0, 0});
+  sub.moving.push_back(m);
+  const SearchSpace space(sub);
+  const SoftPathTable table(space);
+  const SafeIntervalResult free = safeIntervalSearch(space, 0, table, Deadline::in(5.0), 100000);
+  ASSERT_EQ(free.outcome, SafeIntervalResult::Outcome::Found);
+  ASSERT_EQ(static_cast<int>(free.path.size()) - 1, earliest);
+  const SafeIntervalResult at = safeIntervalSearch(space, 0, table, Deadline::in(5.0), 100000, earliest);
+  ASSERT_EQ(at.outcome, SafeIntervalResult::Outcome::Found);
+  EXPECT_EQ(at.path, free.path);
+  const SafeIntervalResult before =
+      safeIntervalSearch(space, 0, table, Deadline::in(5.0), 100000, earliest - 1);
+  EXPECT_EQ(before.outcome, SafeIntervalResult::Outcome::NoPath);
+  EXPECT_LT(before.expansions, free.expansions);
+}
+
 TEST(SafeIntervalSearch, NoCollisionFreePathIsNoPath) {
   // The runner parks for good on the only way to the waiter's target.
   const World w(freeMap(7, 1),

@@ -4,9 +4,10 @@
 /// Layering has a price: a robot of an early subproblem plans around the start footprints of
 /// later robots that have long left, and a robot of a late one waits for whole levels. Once a
 /// merged plan exists, each robot whose cost exceeds its distance to the target is replanned
-/// with the serial backends' space-time A* (space_time_astar.h), every other robot's path being
-/// a moving obstacle, under the bound "strictly cheaper than now". A cheaper path replaces the
-/// old one; it conflicts with nobody by construction, so the plan stays valid. This is a
+/// around every other robot's path (moving obstacles) for its earliest arrival before its
+/// current cost, by a safe interval search (safe_interval_search.h: a wait is one node, so a
+/// path that waits long for others to pass costs a few expansions). A cheaper path replaces
+/// the old one; it conflicts with nobody by construction, so the plan stays valid. This is a
 /// neighbourhood-of-one large neighbourhood search (Li et al., "Anytime Multi-Agent Path
 /// Finding via Large Neighborhood Search", IJCAI 2021) with the current plan as incumbent.
 ///
@@ -31,11 +32,12 @@ namespace fleet_planner {
 
 struct RefinementOptions {
   int max_passes = 4;
-  /// Low-level expansions of all searches together, per robot of the plan (checked between
+  /// Low-level expansions of all searches together (safe-interval expansions of the single
+  /// searches, LA-CBS's of the group searches), per robot of the plan (checked between
   /// searches): bounds the refinement's work the same way on every machine.
-  long long expansions_per_robot = 100'000;
-  long long max_expansions = 1'000'000;  ///< and at most this many in all
-  long long max_nodes_per_search = 100'000;  ///< generated nodes per low-level search
+  long long expansions_per_robot = 30'000;
+  long long max_expansions = 300'000;  ///< and at most this many in all
+  long long max_nodes_per_search = 100'000;  ///< expansions of a single search; LA-CBS: its low-level nodes
   int group_size = 4;                         ///< robots per group search; < 2: none
   long long group_nodes = 64;                 ///< LA-CBS constraint-tree expansions per group
   long long group_expansions = 400'000;       ///< LA-CBS low-level expansions per group

@@ -177,9 +177,11 @@ int stepsBetween(const StateGraph& g, StateId s, StateId goal) {
 // Earliest-arriving collision-free way of agent a from `from` at step t0 to `goal`: held for
 // good (t1 == kNever; `goal` is then a's target), or reached by step t1 and held until t1, or
 // reached later, by step t1 + max_delay.
+// With t1 == kNever, arrivals after `max_arrival` are not searched.
 SafeIntervalResult searchBetween(const SearchSpace& space, int a, const SoftPathTable& others,
                                  StateId from, int t0, StateId goal, int t1, int max_delay,
-                                 const Deadline& deadline, long long max_expansions) {
+                                 const Deadline& deadline, long long max_expansions,
+                                 int max_arrival = kNever) {
   SafeIntervalResult result;
   const StateGraph& g = space.graph(a);
   if (space.distance(a, from) < 0) return result;
@@ -209,7 +211,7 @@ SafeIntervalResult searchBetween(const SearchSpace& space, int a, const SoftPath
   std::priority_queue<int, std::vector<int>, decltype(worse)> open(worse);
   auto push = [&](StateId s, int interval, int arrival, int parent) {
     const int f = arrival + heuristic(s);
-    if (!forever && f > t1 + max_delay) return;  // cannot reach the goal in time
+    if (f > (forever ? max_arrival : t1 + max_delay)) return;  // cannot reach the goal in time
     const std::uint64_t k = key(s, interval);
     const int* known = best.find(k);
     if (known != nullptr && nodes[*known].g <= arrival) return;
@@ -271,9 +273,10 @@ SafeIntervalResult searchBetween(const SearchSpace& space, int a, const SoftPath
 }  // namespace
 
 SafeIntervalResult safeIntervalSearch(const SearchSpace& space, int a, const SoftPathTable& others,
-                                      const Deadline& deadline, long long max_expansions) {
+                                      const Deadline& deadline, long long max_expansions,
+                                      int max_arrival) {
   return searchBetween(space, a, others, space.start(a), 0, space.target(a), kNever, 0, deadline,
-                       max_expansions);
+                       max_expansions, max_arrival);
 }
 
 SafeIntervalResult safeIntervalSegment(const SearchSpace& space, int a,

@@ -21,9 +21,6 @@ SoftPathTable::SoftPathTable(const SearchSpace& space)
       by_((height_ + kBucketCells - 1) / kBucketCells),
       buckets_(bx_ * by_),
       paths_(space.numAgents()),
-      parked_(buckets_),
-      cell_spans_(static_cast<std::size_t>(width_) * height_),
-      cell_blocks_(cell_spans_.size(), 0),
       agent_runs_(space.numAgents()),
       stamp_(space.numAgents(), 0) {}
 
@@ -111,6 +108,11 @@ void SoftPathTable::index(int a, bool on) {
 }
 
 void SoftPathTable::insert(int a, const StatePath& path) {
+  if (cell_spans_.empty()) {
+    parked_.resize(buckets_);
+    cell_spans_.resize(static_cast<std::size_t>(width_) * height_);
+    cell_blocks_.assign(cell_spans_.size(), 0);
+  }
   paths_[a] = path;
   index(a, true);
 }
@@ -152,6 +154,7 @@ bool SoftPathTable::firstVisit(int b) const {
 
 void SoftPathTable::collisions(int a, StateId s, Action action, int t,
                                std::vector<int>& out) const {
+  if (cell_spans_.empty()) return;
   newQuery();
   stamp_[a] = query_;
   const GridPose p = space_.graph(a).pose(s);
@@ -167,6 +170,7 @@ void SoftPathTable::collisions(int a, StateId s, Action action, int t,
 }
 
 void SoftPathTable::collisionsHolding(int a, StateId s, int t, std::vector<int>& out) const {
+  if (cell_spans_.empty()) return;
   newQuery();
   stamp_[a] = query_;
   const GridPose p = space_.graph(a).pose(s);
@@ -197,6 +201,7 @@ void SoftPathTable::unsafeRuns(int a, StateId s, Action action,
                                std::vector<std::pair<int, int>>& runs, int& forever_from) const {
   runs.clear();
   forever_from = kNever;
+  if (cell_spans_.empty()) return;
   newQuery();
   met_.clear();
   const GridPose p = space_.graph(a).pose(s);

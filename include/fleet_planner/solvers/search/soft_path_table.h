@@ -20,6 +20,8 @@ namespace fleet_planner {
 
 class SoftPathTable {
  public:
+  /// An empty table; its per-cell index is allocated at the first insert, so that an empty
+  /// table (a search around moving obstacles only) costs nothing on a large map.
   explicit SoftPathTable(const SearchSpace& space);
 
   /// Puts agent a's path in the table (replacing none: a must not be in it). Not empty.
