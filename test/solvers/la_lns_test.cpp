@@ -307,7 +307,7 @@ TEST(LaLns, GivesUpWhenStuckOnlyIfTheCallerMayTrySomethingElse) {
     if (may_give_up) sub.may_give_up = [] { return true; };
     const Outcome o = solveWith(solver, w, sub);
     EXPECT_EQ(o.result.status, SolveStatus::Timeout) << describe(o);
-    const bool stuck = o.result.reason.find("stuck after 20 repairs of every robot") != std::string::npos;
+    const bool stuck = o.result.reason.find("stuck after 10 repairs of every robot") != std::string::npos;
     EXPECT_EQ(stuck, may_give_up) << o.result.reason;
     EXPECT_EQ(o.result.reason.find("expansion budget") != std::string::npos, !may_give_up) << o.result.reason;
     if (may_give_up) {

@@ -36,7 +36,7 @@ struct LaLnsOptions {
   int neighborhood_size = 8;
   /// Repairs without a new lowest number of colliding pairs after which the neighbourhood
   /// doubles (up to every agent of the subproblem).
-  int stall_repairs = 20;
+  int stall_repairs = 10;
   /// Cost of one colliding step in the low level, in steps of path length.
   int collision_cost = 16;
   /// Expansions of one low-level search before it gives up.
