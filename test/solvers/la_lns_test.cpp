@@ -162,58 +162,65 @@ TEST(SafeIntervalSearch, WaitsInPocketUntilRunnerPassed) {
   EXPECT_TRUE(in_pocket) << "the waiter can only let the runner by from the pocket";
 }
 
-// A robot of another subproblem stands on the corridor until step `wait`, then drives to its
-// end: the waiter leaves right after it, whether the reservations end within the steps the
-// search unites through a bitset (4,096) or beyond them.
-TEST(SafeIntervalSearch, WaitsForAMovingObstacleShortOrLong) {
-  for (int wait : {40, 5000}) {
-    const World w(freeMap(8, 1), {dot("blocker", {3, 0, 0}, {7, 0, 0}), dot("waiter", {0, 0, 0}, {6, 0, 0})});
-    Subproblem sub = allRobots(w);
-    sub.robots = {1};
+// A corridor of 8 cells: a robot of another subproblem (the blocker) stands at x = 3 until step
+// `wait`, then drives to the end; the waiter, the subproblem's only robot, goes from x = 0 to 6.
+struct BlockedCorridor {
+  explicit BlockedCorridor(int wait)
+      : w(freeMap(8, 1), {dot("blocker", {3, 0, 0}, {7, 0, 0}), dot("waiter", {0, 0, 0}, {6, 0, 0})}),
+        sub(waiterAround(wait)),
+        space(sub),
+        table(space) {}
+
+  Subproblem waiterAround(int wait) const {
+    Subproblem out = allRobots(w);
+    out.robots = {1};
     MovingObstacle m;
     m.robot = 0;
     m.path.assign(static_cast<std::size_t>(wait) + 1, GridPose{3, 0, 0});
     for (int x = 4; x <= 7; ++x) m.path.push_back({x, 0, 0});
-    sub.moving.push_back(m);
-    const SearchSpace space(sub);
-    const SoftPathTable table(space);
-    const SafeIntervalResult r = safeIntervalSearch(space, 0, table, Deadline::in(5.0), 100000);
+    out.moving.push_back(m);
+    return out;
+  }
+
+  World w;
+  Subproblem sub;
+  SearchSpace space;
+  SoftPathTable table;
+};
+
+// The waiter leaves right after the blocker, whether the reservations end within the steps the
+// search unites through a bitset (4,096) or beyond them.
+TEST(SafeIntervalSearch, WaitsForAMovingObstacleShortOrLong) {
+  for (int wait : {40, 5000}) {
+    const BlockedCorridor c(wait);
+    const SafeIntervalResult r = safeIntervalSearch(c.space, 0, c.table, Deadline::in(5.0), 100000);
     ASSERT_EQ(r.outcome, SafeIntervalResult::Outcome::Found) << "wait " << wait;
     // One cell behind the blocker (sweeps of a step may not share a cell): x = 6 at step
     // wait + 5, the step after the blocker has parked at x = 7.
     EXPECT_EQ(static_cast<int>(r.path.size()), wait + 6) << "wait " << wait;
     Plan plan;
-    plan.paths.push_back(m.path);
+    plan.paths.push_back(c.sub.moving[0].path);
     Path p;
-    for (StateId s : r.path) p.push_back(space.graph(0).pose(s));
+    for (StateId s : r.path) p.push_back(c.space.graph(0).pose(s));
     plan.paths.push_back(p);
-    const ValidationResult v = validatePlan(w.map, w.instance, plan);
+    const ValidationResult v = validatePlan(c.w.map, c.w.instance, plan);
     EXPECT_TRUE(v.valid()) << "wait " << wait << ": " << v.violation.message;
   }
 }
 
-// The same blocker, with a bound on the arrival: a bound at the earliest arrival finds it, one
+// The same corridor with a bound on the arrival: a bound at the earliest arrival finds it, one
 // step below answers NoPath, after fewer expansions than the unbounded search needs to arrive.
 TEST(SafeIntervalSearch, ArrivalBoundPrunesLaterArrivals) {
   const int wait = 40, earliest = wait + 5;
-  const World w(freeMap(8, 1), {dot("blocker", {3, 0, 0}, {7, 0, 0}), dot("waiter", {0, 0, 0}, {6, 0, 0})});
-  Subproblem sub = allRobots(w);
-  sub.robots = {1};
-  MovingObstacle m;
-  m.robot = 0;
-  m.path.assign(static_cast<std::size_t>(wait) + 1, GridPose{3, 0, 0});
-  for (int x = 4; x <= 7; ++x) m.path.push_back({x, 0, 0});
-  sub.moving.push_back(m);
-  const SearchSpace space(sub);
-  const SoftPathTable table(space);
-  const SafeIntervalResult free = safeIntervalSearch(space, 0, table, Deadline::in(5.0), 100000);
+  const BlockedCorridor c(wait);
+  const SafeIntervalResult free = safeIntervalSearch(c.space, 0, c.table, Deadline::in(5.0), 100000);
   ASSERT_EQ(free.outcome, SafeIntervalResult::Outcome::Found);
   ASSERT_EQ(static_cast<int>(free.path.size()) - 1, earliest);
-  const SafeIntervalResult at = safeIntervalSearch(space, 0, table, Deadline::in(5.0), 100000, earliest);
+  const SafeIntervalResult at = safeIntervalSearch(c.space, 0, c.table, Deadline::in(5.0), 100000, earliest);
   ASSERT_EQ(at.outcome, SafeIntervalResult::Outcome::Found);
   EXPECT_EQ(at.path, free.path);
   const SafeIntervalResult before =
-      safeIntervalSearch(space, 0, table, Deadline::in(5.0), 100000, earliest - 1);
+      safeIntervalSearch(c.space, 0, c.table, Deadline::in(5.0), 100000, earliest - 1);
   EXPECT_EQ(before.outcome, SafeIntervalResult::Outcome::NoPath);
   EXPECT_LT(before.expansions, free.expansions);
 }
