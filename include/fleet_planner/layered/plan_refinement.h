@@ -37,7 +37,7 @@ struct RefinementOptions {
   /// searches): bounds the refinement's work the same way on every machine.
   long long expansions_per_robot = 30'000;
   long long max_expansions = 300'000;  ///< and at most this many in all
-  long long max_nodes_per_search = 100'000;  ///< expansions of a single search; LA-CBS: its low-level nodes
+  long long max_nodes_per_search = 50'000;  ///< expansions of a single search; LA-CBS: its low-level nodes
   int group_size = 4;                         ///< robots per group search; < 2: none
   long long group_nodes = 64;                 ///< LA-CBS constraint-tree expansions per group
   long long group_expansions = 400'000;       ///< LA-CBS low-level expansions per group
