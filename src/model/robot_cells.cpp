@@ -6,6 +6,12 @@
 namespace fleet_planner {
 
 RobotCells::RobotCells(const Robot& robot, const FootprintCells& cells, const Path& path)
+    : RobotCells(robot, cells, path, nullptr) {}
+
+RobotCells::RobotCells(const Robot& robot, const RobotCells& shapes, const Path& path)
+    : RobotCells(robot, shapes.cells_, path, &shapes) {}
+
+RobotCells::RobotCells(const Robot& robot, const FootprintCells& cells, const Path& path, const RobotCells* shapes)
     : cells_(cells), path_(path), last_(static_cast<int>(path.size()) - 1) {
   turn_ = robot.start_yaw ? std::max(0, robot.start_turn) : -1;
   const int turns = (robot.start_yaw ? turn_ + 1 : 0) + (robot.target_yaw ? 1 : 0);
@@ -14,6 +20,12 @@ RobotCells::RobotCells(const Robot& robot, const FootprintCells& cells, const Pa
     shape_problem_ = "a path that turns from a start yaw or to a target yaw needs a step for each turn";
     return;
   }
+  // The yaw shapes depend on the footprint, the yaws and the path's first and last headings:
+  // taken from `shapes` when those agree (the same robot on another path).
+  const bool same_start = shapes && shapes->start_turn_ && !shapes->path_.empty() &&
+                          shapes->path_.front().heading == path.front().heading;
+  const bool same_end = shapes && shapes->end_turn_ && !shapes->path_.empty() &&
+                        shapes->path_.back().heading == path.back().heading;
   if (robot.start_yaw) {
     for (int t = 1; t <= turn_ + 1; ++t) {
       if (path[t] != path[0]) {
@@ -21,13 +33,15 @@ RobotCells::RobotCells(const Robot& robot, const FootprintCells& cells, const Pa
                          " by step " + std::to_string(turn_);
       }
     }
-    start_body_ = footprintCellsAt(cells.footprint(), *robot.start_yaw);
-    start_turn_ = turnSweep(cells.footprint(), *robot.start_yaw, headingYaw(path[0].heading));
+    start_body_ = same_start ? shapes->start_body_ : footprintCellsAt(cells.footprint(), *robot.start_yaw);
+    start_turn_ = same_start ? shapes->start_turn_
+                             : turnSweep(cells.footprint(), *robot.start_yaw, headingYaw(path[0].heading));
   }
   if (robot.target_yaw) {
     if (path[last_ - 1] != path[last_]) shape_problem_ = "the last step must turn in place from " + toString(path[last_]) + " to the target yaw";
-    end_body_ = footprintCellsAt(cells.footprint(), *robot.target_yaw);
-    end_turn_ = turnSweep(cells.footprint(), headingYaw(path[last_].heading), *robot.target_yaw);
+    end_body_ = same_end ? shapes->end_body_ : footprintCellsAt(cells.footprint(), *robot.target_yaw);
+    end_turn_ = same_end ? shapes->end_turn_
+                         : turnSweep(cells.footprint(), headingYaw(path[last_].heading), *robot.target_yaw);
   }
 }
 

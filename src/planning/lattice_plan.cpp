@@ -58,11 +58,17 @@ std::optional<Plan> assembleLatticePlan(const Instance& instance, const LatticeI
     const Path& suffix = lattice.connections[i].suffix;
     if (suffix.size() == 1) continue;
     bool placed = false;
+    Path first;                          // the first candidate, whose yaw shapes the later ones reuse
+    std::unique_ptr<RobotCells> shapes;  // of `first`
     for (int t = arrival[i]; t <= horizon + static_cast<int>(suffix.size()) && !placed; ++t) {
       Path candidate(paths[i].begin(), paths[i].begin() + arrival[i] + 1);
       candidate.resize(static_cast<std::size_t>(t) + 1, candidate.back());
       candidate.insert(candidate.end(), suffix.begin() + 1, suffix.end());
-      const RobotCells mine(original[i], graphs.cells(i), candidate);
+      if (!shapes) {
+        first = candidate;
+        shapes = std::make_unique<RobotCells>(original[i], graphs.cells(i), first);
+      }
+      const RobotCells mine(original[i], *shapes, candidate);
       bool clash = false;
       for (int j = 0; j < n && !clash; ++j) {
         if (j != i) clash = pathsMeet(mine, candidate, *cells[j], paths[j], t, model);

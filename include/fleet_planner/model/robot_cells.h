@@ -20,6 +20,11 @@ class RobotCells {
  public:
   /// `cells` and `path` must outlive this object.
   RobotCells(const Robot& robot, const FootprintCells& cells, const Path& path);
+  /// The same robot on another path: the cells at its yaws are copied from `shapes` where
+  /// `path` starts and ends on the same headings as the path of `shapes` (computing them takes
+  /// trigonometry over the whole footprint), else computed. `path` and the footprint cells of
+  /// `shapes` must outlive this object.
+  RobotCells(const Robot& robot, const RobotCells& shapes, const Path& path);
 
   /// Empty when the path has the shape the yaws need; otherwise why not.
   const std::string& shapeProblem() const { return shape_problem_; }
@@ -32,6 +37,8 @@ class RobotCells {
   std::optional<Action> actionAt(int t, const ActionModel& model) const;
 
  private:
+  RobotCells(const Robot& robot, const FootprintCells& cells, const Path& path, const RobotCells* shapes);
+
   const FootprintCells& cells_;
   const Path& path_;
   int last_;  ///< the path's last time
