@@ -215,7 +215,8 @@ class Refiner {
     cbs_options.max_high_level_nodes = options_.group_nodes;
     cbs_options.pairwise_delay_nodes = 0;
     cbs_options.max_low_level_nodes = options_.max_nodes_per_search;
-    cbs_options.max_total_expansions = options_.group_expansions;
+    // What is left of the refinement's budget (groupPass starts a group only while some is).
+    cbs_options.max_total_expansions = std::min(options_.group_expansions, max_expansions_ - stats_.expansions);
     ++stats_.group_searches;
     const SolveResult solved = timed([&] { return LaCbs(cbs_options).solve(sub); });
     stats_.expansions += solved.stats.low_level_expansions;

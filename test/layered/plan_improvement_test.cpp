@@ -143,6 +143,35 @@ TEST(PlanRefinement, FindsALongWaitInAFewNodes) {
   EXPECT_EQ(stats.soc_saved, 13 + 30);
 }
 
+// Refinement's budget of expansions holds for its group searches too: a search that starts
+// within the budget may run past it only until its next check (a single search: its own limit;
+// a group search: the low-level searches of LA-CBS's root or of one node, a dozen here).
+TEST(PlanRefinement, GroupSearchesStayWithinTheBudget) {
+  int grouped = 0;
+  for (std::uint64_t seed = 1; seed <= 40; ++seed) {
+    const GridMap map = test::randomMap(seed, 14, 12, 6, 10);
+    const std::optional<Instance> fleet = test::randomFleet(map, 3 + static_cast<int>(seed % 5), seed);
+    if (!fleet) continue;
+    const FleetGraphs graphs(map, footprintsOf(*fleet));
+    LayeredOptions plain;
+    plain.backend = "la_lacam";
+    plain.refine = plain.compress = false;
+    plain.seed = seed;
+    LayeredResult merged = planLayered(map, *fleet, graphs, plain, Deadline::in(0.5));
+    if (!merged.success()) continue;
+    RefinementOptions options;
+    options.max_nodes_per_search = 100;
+    options.max_expansions = 300;
+    const RefinementStats stats = refinePlan(*fleet, graphs, merged.plan.paths, Deadline::in(5), options);
+    EXPECT_LE(stats.expansions, options.max_expansions + 3 * options.group_size * options.max_nodes_per_search)
+        << "seed " << seed;
+    grouped += stats.group_searches > 0;
+    const ValidationResult check = validatePlan(map, *fleet, merged.plan);
+    EXPECT_TRUE(check.valid()) << "seed " << seed << ": " << check.violation.message;
+  }
+  EXPECT_GT(grouped, 3);
+}
+
 // On seeded random instances, the layered planner with refinement and compression returns valid
 // plans whose SOC and makespan are never above those it returns without them.
 TEST(PlanImprovement, NeverWorseThanTheMergedPlan) {

@@ -33,14 +33,15 @@ namespace fleet_planner {
 struct RefinementOptions {
   int max_passes = 4;
   /// Low-level expansions of all searches together (safe-interval expansions of the single
-  /// searches, LA-CBS's of the group searches), per robot of the plan (checked between
-  /// searches): bounds the refinement's work the same way on every machine.
+  /// searches, LA-CBS's of the group searches), per robot of the plan (checked between single
+  /// searches; a group search gets what is left, checked by LA-CBS between its nodes): bounds
+  /// the refinement's work the same way on every machine.
   long long expansions_per_robot = 30'000;
   long long max_expansions = 300'000;  ///< and at most this many in all
   long long max_nodes_per_search = 50'000;  ///< expansions of a single search; LA-CBS: its low-level nodes
   int group_size = 4;                         ///< robots per group search; < 2: none
   long long group_nodes = 64;                 ///< LA-CBS constraint-tree expansions per group
-  long long group_expansions = 400'000;       ///< LA-CBS low-level expansions per group
+  long long group_expansions = 400'000;       ///< LA-CBS low-level expansions per group (at most what is left)
 };
 
 struct RefinementStats {
