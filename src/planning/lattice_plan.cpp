@@ -58,17 +58,19 @@ std::optional<Plan> assembleLatticePlan(const Instance& instance, const LatticeI
     const Path& suffix = lattice.connections[i].suffix;
     if (suffix.size() == 1) continue;
     bool placed = false;
-    Path first;                          // the first candidate, whose yaw shapes the later ones reuse
-    std::unique_ptr<RobotCells> shapes;  // of `first`
+    // The robot's path if its connection starts at step t.
+    auto connectedAt = [&](int t) {
+      Path p(paths[i].begin(), paths[i].begin() + arrival[i] + 1);
+      p.resize(static_cast<std::size_t>(t) + 1, p.back());
+      p.insert(p.end(), suffix.begin() + 1, suffix.end());
+      return p;
+    };
+    // Every candidate starts and ends on the same headings: its yaw shapes are computed once.
+    const Path earliest = connectedAt(arrival[i]);
+    const RobotCells shapes(original[i], graphs.cells(i), earliest);
     for (int t = arrival[i]; t <= horizon + static_cast<int>(suffix.size()) && !placed; ++t) {
-      Path candidate(paths[i].begin(), paths[i].begin() + arrival[i] + 1);
-      candidate.resize(static_cast<std::size_t>(t) + 1, candidate.back());
-      candidate.insert(candidate.end(), suffix.begin() + 1, suffix.end());
-      if (!shapes) {
-        first = candidate;
-        shapes = std::make_unique<RobotCells>(original[i], graphs.cells(i), first);
-      }
-      const RobotCells mine(original[i], *shapes, candidate);
+      Path candidate = connectedAt(t);
+      const RobotCells mine(original[i], shapes, candidate);
       bool clash = false;
       for (int j = 0; j < n && !clash; ++j) {
         if (j != i) clash = pathsMeet(mine, candidate, *cells[j], paths[j], t, model);
@@ -76,7 +78,7 @@ std::optional<Plan> assembleLatticePlan(const Instance& instance, const LatticeI
       if (clash) continue;
       paths[i] = std::move(candidate);
       seen[i] = original[i];
-      cells[i] = std::make_unique<RobotCells>(seen[i], graphs.cells(i), paths[i]);
+      cells[i] = std::make_unique<RobotCells>(seen[i], shapes, paths[i]);
       horizon = std::max(horizon, static_cast<int>(paths[i].size()));
       placed = true;
     }

@@ -169,7 +169,8 @@ TEST(PlanRefinement, GroupSearchesStayWithinTheBudget) {
     const ValidationResult check = validatePlan(map, *fleet, merged.plan);
     EXPECT_TRUE(check.valid()) << "seed " << seed << ": " << check.violation.message;
   }
-  EXPECT_GT(grouped, 3);
+  EXPECT_GT(grouped, 3) << grouped;
+  std::cout << "[ grouped   ] " << grouped << "\n";
 }
 
 // On seeded random instances, the layered planner with refinement and compression returns valid
