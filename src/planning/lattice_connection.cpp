@@ -1,6 +1,11 @@
 // Putting a fleet on its planning lattice; see lattice.h.
 #include <algorithm>
 #include <cmath>
+#include <functional>
+#include <map>
+#include <queue>
+#include <tuple>
+#include <unordered_map>
 
 #include "fleet_planner/model/collision.h"
 #include "fleet_planner/model/plan_validator.h"
@@ -23,6 +28,13 @@ double narrowWidth(const Footprint& f) {
 }
 
 int mod(int a, int s) { return ((a % s) + s) % s; }
+
+/// A* expansions per connection choice for the robot's way on its lattice; a way not found
+/// within them counts as kNoWay steps (the choice is tried last).
+constexpr long long kWayExpansions = 200'000;
+/// A* expansions for all robots' ways together (about a second).
+constexpr long long kFleetWayExpansions = 10'000'000;
+constexpr int kNoWay = 1 << 24;
 
 /// One way to connect a robot: the heading it moves on to the lattice and the one it arrives on.
 struct Choice {
@@ -137,10 +149,49 @@ std::vector<EndWay> targetWays(const Robot& r, const StateGraph& g, const GridMa
   return out;
 }
 
+/// A lower bound on the steps from `from` to `to` on a lattice of `step` cells (latticeDistance).
+int wayBound(const GridPose& from, const GridPose& to, int step) {
+  const int cells = std::abs(from.x - to.x) + std::abs(from.y - to.y);
+  return (cells + step - 1) / step + (from.heading != to.heading ? 1 : 0);
+}
+
+/// Steps from `from` to `to` in `g` for the robot alone on the map (A*, a move `step` cells along
+/// one axis, a quarter turn a step); -1 if there is no way within `max_expansions` expansions.
+/// The expansions made are added to `expansions`.
+int latticeDistance(const StateGraph& g, const GridPose& from, const GridPose& to, long long max_expansions,
+                    long long& expansions) {
+  const StateId s0 = g.id(from), goal = g.id(to);
+  if (!g.valid(s0) || !g.valid(goal)) return -1;
+  const int step = g.actionModel().step;
+  auto h = [&](StateId s) { return wayBound(g.pose(s), to, step); };
+  std::unordered_map<StateId, int> g_of{{s0, 0}};
+  // (f, -g, state): among equal f the deepest first, which crosses a plateau of equal f along
+  // one way instead of all of it; then by state id (deterministic).
+  using Entry = std::tuple<int, int, StateId>;
+  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> open;
+  open.push({h(s0), 0, s0});
+  const long long limit = expansions + max_expansions;
+  while (!open.empty() && expansions < limit) {
+    const auto [f, minus_g, s] = open.top();
+    open.pop();
+    const int gs = g_of[s];
+    if (-minus_g > gs) continue;  // superseded
+    if (s == goal) return gs;
+    ++expansions;
+    g.forEachSuccessor(s, [&](Action, StateId next) {
+      const auto it = g_of.find(next);
+      if (it != g_of.end() && it->second <= gs + 1) return;
+      g_of[next] = gs + 1;
+      open.push({gs + 1 + h(next), -(gs + 1), next});
+    });
+  }
+  return -1;
+}
+
 /// Every valid way to connect robot `r`, cheapest first (ties in a fixed order). `problem` is set
 /// (with its kind) when an end has no way at all.
 std::vector<Choice> choicesFor(const Robot& r, int index, const StateGraph& g, const GridMap& map, int s,
-                               std::vector<RobotProblem>& problems) {
+                               std::vector<RobotProblem>& problems, long long& way_expansions) {
   std::vector<Choice> out;
   const GridPose S = r.start, G = r.target;
   std::string why;
@@ -174,6 +225,12 @@ std::vector<Choice> choicesFor(const Robot& r, int index, const StateGraph& g, c
         const int along = c_on_x ? G.x - S.x : G.y - S.y;
         lengths.push_back({mod(along * (c_on_x ? dc.x : dc.y), s), 0});
         if (s > 1) lengths.push_back({0, mod(along * (f_on_x ? df.x : df.y), s)});
+        // Moves at both ends shift the lattice across that axis: any of its s offsets (a door
+        // may be open on one of them only).
+        for (int k = 1; k < s; ++k) {
+          const int kf = mod((along - k * (c_on_x ? dc.x : dc.y)) * (f_on_x ? df.x : df.y), s);
+          if (kf > 0 && k != lengths.front().first) lengths.push_back({k, kf});
+        }
       }
       for (const auto& [k, kf] : lengths) {
         Choice c;
@@ -186,6 +243,30 @@ std::vector<Choice> choicesFor(const Robot& r, int index, const StateGraph& g, c
         c.cost = static_cast<int>(c.prefix.size() + c.suffix.size()) - 2;
         out.push_back(std::move(c));
       }
+    }
+  }
+  // On a coarser lattice the choice also sets the robot's offset, which may close a passage that
+  // another offset keeps open (a door a little wider than the robot): each choice counts the
+  // robot's way on its lattice, alone on the map, too (on step 1 every choice has the same).
+  // Choices are searched in the order of a lower bound on that total (the connecting steps and
+  // the moves of a straight way); one whose bound is no better than the best total found keeps
+  // its bound, which sorts it after that best. Past the fleet's budget for these searches, the
+  // robots left are ordered by connecting steps alone (deterministic: expansions, not time).
+  if (s > 1 && way_expansions < kFleetWayExpansions) {
+    for (Choice& c : out) c.cost += wayBound(c.prefix.back(), c.suffix.front(), s);
+    std::stable_sort(out.begin(), out.end(), [](const Choice& a, const Choice& b) { return a.cost < b.cost; });
+    std::map<std::pair<StateId, StateId>, int> known;
+    int best = kNoWay;
+    for (Choice& c : out) {
+      if (c.cost >= best) break;
+      const auto key = std::make_pair(g.id(c.prefix.back()), g.id(c.suffix.front()));
+      auto it = known.find(key);
+      if (it == known.end()) {
+        const int way = latticeDistance(g, c.prefix.back(), c.suffix.front(), kWayExpansions, way_expansions);
+        it = known.emplace(key, way).first;
+      }
+      c.cost += (it->second >= 0 ? it->second : kNoWay) - wayBound(c.prefix.back(), c.suffix.front(), s);
+      best = std::min(best, c.cost);
     }
   }
   std::stable_sort(out.begin(), out.end(), [](const Choice& a, const Choice& b) { return a.cost < b.cost; });
@@ -255,8 +336,9 @@ LatticeInstance connectToLattice(const GridMap& map, const Instance& instance, c
   const int n = static_cast<int>(instance.robots.size());
   std::vector<std::vector<Choice>> choices(n);
   std::vector<std::size_t> chosen(n, 0);
+  long long way_expansions = 0;
   for (int i = 0; i < n; ++i) {
-    choices[i] = choicesFor(instance.robots[i], i, graphs.graph(i), map, step, out.problems);
+    choices[i] = choicesFor(instance.robots[i], i, graphs.graph(i), map, step, out.problems, way_expansions);
     if (!out.problems.empty()) {
       out.problem = out.problems.front().reason;
       return out;

@@ -145,14 +145,38 @@ TEST(Lattice, ADoorAsWideAsTheRobotStaysOpenWhenALatticeLinePassesThroughIt) {
   EXPECT_EQ(r.lattice_step, 4) << (r.lattice_notes.empty() ? "" : r.lattice_notes.front());
 }
 
-TEST(Lattice, ARobotThatTheLatticeCannotServeIsNamedAndPlannedOnAFinerOne) {
-  // The same door, but the robot's lattice lines (y = 11 + 4k) miss it: the lattice of 4 cannot
-  // take it through; the plan is made on a finer lattice and the reason names the robot.
-  std::vector<std::string> rows(25, std::string(40, '.'));
-  for (int y = 0; y < 25; ++y) {
-    if (y < 10 || y > 14) rows[y][20] = '@';
+/// Walls at x = 20 and x = 30 with doors 5 cells wide from y = `door` (and from y = `door2`),
+/// closed below `bottom` (open rows under it: a way round); the map is `height` cells high.
+GridMap doorsMap(int height, int door, int door2, int bottom) {
+  std::vector<std::string> rows(height, std::string(48, '.'));
+  for (int y = 0; y < height; ++y) {
+    if ((y < door || y > door + 4) && y < bottom) rows[y][20] = '@';
+    if ((y < door2 || y > door2 + 4) && y < bottom) rows[y][30] = '@';
   }
-  const GridMap map = mapFromRows(rows);
+  return mapFromRows(rows);
+}
+
+TEST(Lattice, AConnectionPicksTheLatticeOffsetThatKeepsADoorOpen) {
+  // The robot stands on y = 11; lattice lines through it (y = 11 + 4k) miss the door (it needs
+  // y = 12), and the way round the walls' ends is long. Its connections move it one cell onto
+  // the lattice through the door and back: the way straight through costs the 32 cells / 4 of
+  // the moves and a few steps of connections.
+  const GridMap map = doorsMap(32, 10, 10, 23);
+  Instance instance;
+  instance.robots = {box("r", 5, 5, {4, 11, 0}, {36, 11, 0})};
+  const PlanningResult r = planFleet(map, instance, onLattice(4));
+  ASSERT_TRUE(validOnCells(map, instance, r));
+  EXPECT_EQ(r.lattice_step, 4);
+  EXPECT_TRUE(r.lattice_notes.empty()) << (r.lattice_notes.empty() ? "" : r.lattice_notes.front());
+  const int cost = pathCost(r.plan.paths[0], instance.robots[0].target);
+  EXPECT_LE(cost, 16) << "a way round the walls";
+}
+
+TEST(Lattice, ARobotThatTheLatticeCannotServeIsNamedAndPlannedOnAFinerOne) {
+  // Two doors in a row, at y = 10..14 and y = 11..15: a robot 5 cells across needs y = 12 in the
+  // first and y = 13 in the second, and a lattice of 4 cannot shift it by one cell between them:
+  // the plan is made on a finer lattice and the reason names the robot.
+  const GridMap map = doorsMap(25, 10, 11, 25);
   Instance instance;
   instance.robots = {box("r", 5, 5, {4, 11, 0}, {35, 11, 0})};
   const PlanningResult r = planFleet(map, instance, onLattice(4));
