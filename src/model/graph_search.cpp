@@ -1,5 +1,11 @@
 #include "fleet_planner/model/graph_search.h"
 
+#include <cstdlib>
+#include <functional>
+#include <queue>
+#include <tuple>
+#include <unordered_map>
+
 namespace fleet_planner {
 
 std::vector<std::int32_t> distancesTo(const StateGraph& graph, StateId target) {
@@ -53,6 +59,40 @@ bool isReachable(const StateGraph& graph, StateId from, StateId to) {
     if (found) return true;
   }
   return false;
+}
+
+int stepsBound(const StateGraph& graph, const GridPose& from, const GridPose& to) {
+  const int step = graph.actionModel().step;
+  const int cells = std::abs(from.x - to.x) + std::abs(from.y - to.y);
+  return (cells + step - 1) / step + (from.heading != to.heading ? 1 : 0);
+}
+
+int stepsBetween(const StateGraph& graph, StateId from, StateId to, long long max_expansions, long long& expansions) {
+  if (!graph.valid(from) || !graph.valid(to)) return -1;
+  const GridPose goal = graph.pose(to);
+  auto h = [&](StateId s) { return stepsBound(graph, graph.pose(s), goal); };
+  std::unordered_map<StateId, int> cost{{from, 0}};  // the states seen: few of a large graph
+  // (f, -g, state): among equal f the deepest first, which crosses a plateau of equal f along
+  // one way instead of all of it; then by state id (deterministic).
+  using Entry = std::tuple<int, int, StateId>;
+  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> open;
+  open.push({h(from), 0, from});
+  const long long limit = expansions + max_expansions;
+  while (!open.empty() && expansions < limit) {
+    const auto [f, minus_g, s] = open.top();
+    open.pop();
+    const int g = cost[s];
+    if (-minus_g > g) continue;  // superseded
+    if (s == to) return g;
+    ++expansions;
+    graph.forEachSuccessor(s, [&](Action, StateId next) {
+      const auto it = cost.find(next);
+      if (it != cost.end() && it->second <= g + 1) return;
+      cost[next] = g + 1;
+      open.push({g + 1 + h(next), -(g + 1), next});
+    });
+  }
+  return -1;
 }
 
 }  // namespace fleet_planner

@@ -1,13 +1,10 @@
 // Putting a fleet on its planning lattice; see lattice.h.
 #include <algorithm>
 #include <cmath>
-#include <functional>
 #include <map>
-#include <queue>
-#include <tuple>
-#include <unordered_map>
 
 #include "fleet_planner/model/collision.h"
+#include "fleet_planner/model/graph_search.h"
 #include "fleet_planner/model/plan_validator.h"
 #include "fleet_planner/model/instance_check.h"
 #include "fleet_planner/planning/lattice.h"
@@ -149,47 +146,9 @@ std::vector<EndWay> targetWays(const Robot& r, const StateGraph& g, const GridMa
   return out;
 }
 
-/// A lower bound on the steps from `from` to `to` on a lattice of `step` cells (latticeDistance).
-int wayBound(const GridPose& from, const GridPose& to, int step) {
-  const int cells = std::abs(from.x - to.x) + std::abs(from.y - to.y);
-  return (cells + step - 1) / step + (from.heading != to.heading ? 1 : 0);
-}
-
-/// Steps from `from` to `to` in `g` for the robot alone on the map (A*, a move `step` cells along
-/// one axis, a quarter turn a step); -1 if there is no way within `max_expansions` expansions.
-/// The expansions made are added to `expansions`.
-int latticeDistance(const StateGraph& g, const GridPose& from, const GridPose& to, long long max_expansions,
-                    long long& expansions) {
-  const StateId s0 = g.id(from), goal = g.id(to);
-  if (!g.valid(s0) || !g.valid(goal)) return -1;
-  const int step = g.actionModel().step;
-  auto h = [&](StateId s) { return wayBound(g.pose(s), to, step); };
-  std::unordered_map<StateId, int> g_of{{s0, 0}};
-  // (f, -g, state): among equal f the deepest first, which crosses a plateau of equal f along
-  // one way instead of all of it; then by state id (deterministic).
-  using Entry = std::tuple<int, int, StateId>;
-  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> open;
-  open.push({h(s0), 0, s0});
-  const long long limit = expansions + max_expansions;
-  while (!open.empty() && expansions < limit) {
-    const auto [f, minus_g, s] = open.top();
-    open.pop();
-    const int gs = g_of[s];
-    if (-minus_g > gs) continue;  // superseded
-    if (s == goal) return gs;
-    ++expansions;
-    g.forEachSuccessor(s, [&](Action, StateId next) {
-      const auto it = g_of.find(next);
-      if (it != g_of.end() && it->second <= gs + 1) return;
-      g_of[next] = gs + 1;
-      open.push({gs + 1 + h(next), -(gs + 1), next});
-    });
-  }
-  return -1;
-}
-
-/// Every valid way to connect robot `r`, cheapest first (ties in a fixed order). `problem` is set
-/// (with its kind) when an end has no way at all.
+/// Every valid way to connect robot `r`, cheapest first (ties in a fixed order): on a lattice of
+/// step > 1, the connecting steps plus the robot's way on the lattice they choose. `problem` is
+/// set (with its kind) when an end has no way at all. Adds the A* expansions to `way_expansions`.
 std::vector<Choice> choicesFor(const Robot& r, int index, const StateGraph& g, const GridMap& map, int s,
                                std::vector<RobotProblem>& problems, long long& way_expansions) {
   std::vector<Choice> out;
@@ -229,7 +188,7 @@ std::vector<Choice> choicesFor(const Robot& r, int index, const StateGraph& g, c
         // may be open on one of them only).
         for (int k = 1; k < s; ++k) {
           const int kf = mod((along - k * (c_on_x ? dc.x : dc.y)) * (f_on_x ? df.x : df.y), s);
-          if (kf > 0 && k != lengths.front().first) lengths.push_back({k, kf});
+          if (k != lengths.front().first) lengths.push_back({k, kf});  // else it is the first
         }
       }
       for (const auto& [k, kf] : lengths) {
@@ -253,7 +212,7 @@ std::vector<Choice> choicesFor(const Robot& r, int index, const StateGraph& g, c
   // its bound, which sorts it after that best. Past the fleet's budget for these searches, the
   // robots left are ordered by connecting steps alone (deterministic: expansions, not time).
   if (s > 1 && way_expansions < kFleetWayExpansions) {
-    for (Choice& c : out) c.cost += wayBound(c.prefix.back(), c.suffix.front(), s);
+    for (Choice& c : out) c.cost += stepsBound(g, c.prefix.back(), c.suffix.front());
     std::stable_sort(out.begin(), out.end(), [](const Choice& a, const Choice& b) { return a.cost < b.cost; });
     std::map<std::pair<StateId, StateId>, int> known;
     int best = kNoWay;
@@ -262,10 +221,10 @@ std::vector<Choice> choicesFor(const Robot& r, int index, const StateGraph& g, c
       const auto key = std::make_pair(g.id(c.prefix.back()), g.id(c.suffix.front()));
       auto it = known.find(key);
       if (it == known.end()) {
-        const int way = latticeDistance(g, c.prefix.back(), c.suffix.front(), kWayExpansions, way_expansions);
+        const int way = stepsBetween(g, g.id(c.prefix.back()), g.id(c.suffix.front()), kWayExpansions, way_expansions);
         it = known.emplace(key, way).first;
       }
-      c.cost += (it->second >= 0 ? it->second : kNoWay) - wayBound(c.prefix.back(), c.suffix.front(), s);
+      c.cost += (it->second >= 0 ? it->second : kNoWay) - stepsBound(g, c.prefix.back(), c.suffix.front());
       best = std::min(best, c.cost);
     }
   }

@@ -5,6 +5,7 @@
 
 #include "fleet_planner/model/fleet_graphs.h"
 #include "fleet_planner/model/graph_search.h"
+#include "fleet_planner/runtime/random.h"
 #include "test_maps.h"
 
 namespace fleet_planner {
@@ -94,6 +95,38 @@ TEST(StateGraph, DistancesCountActions) {
   EXPECT_EQ(dist[g.id({3, 0, 1})], 2);  // two quarter turns
   EXPECT_TRUE(isReachable(g, g.id({0, 0, 1}), g.id({3, 0, 0})));
   EXPECT_EQ(reachableFrom(g, g.id({0, 0, 0})).size(), 16u);
+}
+
+// The A* between two states counts what the breadth-first distances count, on lattices of 1-3
+// cells with random walls, and finds nothing where they find nothing.
+TEST(StateGraph, StepsBetweenTwoStatesMatchTheDistances) {
+  int found = 0, none = 0;
+  for (std::uint64_t seed = 1; seed <= 60; ++seed) {
+    Rng rng(seed);
+    std::vector<std::string> rows(14, std::string(18, '.'));
+    for (int k = 0; k < 25; ++k) rows[rng.uniformInt(0, 13)][rng.uniformInt(0, 17)] = '@';
+    ActionModel model;
+    model.step = 1 + static_cast<int>(seed % 3);
+    const StateGraph g = build(mapFromRows(rows), Footprint::block(-1.4, -0.6, 1.4, 0.6), model);
+    auto pose = [&] {
+      return GridPose{static_cast<int>(rng.uniformInt(0, 17)), static_cast<int>(rng.uniformInt(0, 13)),
+                      static_cast<int>(rng.uniformInt(0, 3))};
+    };
+    for (int pair = 0; pair < 10; ++pair) {
+      const StateId from = g.id(pose());
+      if (!g.valid(from)) continue;
+      // Every other target one that `from` reaches (most random ones are off its lattice).
+      const std::vector<StateId> reached = reachableFrom(g, from);
+      const StateId to = pair % 2 ? g.id(pose()) : reached[rng.uniformInt(0, static_cast<std::int64_t>(reached.size()) - 1)];
+      if (!g.valid(to)) continue;
+      long long expansions = 0;
+      const int steps = stepsBetween(g, from, to, 1'000'000, expansions);
+      EXPECT_EQ(steps, distancesTo(g, to)[from]) << "seed " << seed << " pair " << pair;
+      (steps >= 0 ? found : none) += 1;
+    }
+  }
+  EXPECT_GT(found, 50);
+  EXPECT_GT(none, 20);
 }
 
 TEST(FleetGraphs, RobotsWithEqualCellsShareAGraph) {

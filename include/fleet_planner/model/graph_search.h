@@ -1,5 +1,5 @@
 #pragma once
-/// Breadth-first searches over one state graph (every action costs one step).
+/// Searches over one state graph (every action costs one step): breadth-first, and one A*.
 #include <cstdint>
 #include <vector>
 
@@ -16,5 +16,14 @@ std::vector<StateId> reachableFrom(const StateGraph& graph, StateId start);
 
 /// True when `to` can be reached from `from` in the graph.
 bool isReachable(const StateGraph& graph, StateId from, StateId to);
+
+/// A lower bound on the steps from `from` to `to`: the moves a straight way along the axes needs
+/// (a move advances the graph's step), and a quarter turn if the headings differ.
+int stepsBound(const StateGraph& graph, const GridPose& from, const GridPose& to);
+
+/// Steps from `from` to `to` (as distancesTo would count them) by A* with stepsBound, without
+/// filling the whole graph; -1 if `to` is unreachable or not found within `max_expansions`
+/// expansions. The expansions made are added to `expansions`.
+int stepsBetween(const StateGraph& graph, StateId from, StateId to, long long max_expansions, long long& expansions);
 
 }  // namespace fleet_planner

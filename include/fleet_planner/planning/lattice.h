@@ -44,9 +44,10 @@ struct LatticeInstance {
   std::vector<RobotProblem> problems;
 };
 
-/// Chooses each robot's connections on `graphs` (built with ActionModel::step = `step`): the
-/// fewest connecting steps whose motions are free on the map, and whose starts' connections,
-/// run together, meet no other robot's.
+/// Chooses each robot's connections on `graphs` (built with ActionModel::step = `step`): motions
+/// free on the map, starts' connections that, run together, meet no other robot's, and of those
+/// the fewest connecting steps plus steps of the robot's way on the lattice offset they choose
+/// (alone on the map; the order of connecting steps alone past a budget of A* expansions).
 LatticeInstance connectToLattice(const GridMap& map, const Instance& instance, const FleetGraphs& graphs, int step);
 
 /// Robot a and robot b along their paths meet at some step u >= from: the cells they cover during
