@@ -47,6 +47,8 @@ void LaLns::configure(const BackendOptionValues& values) {
   bind.number("joint_seconds", o.joint_seconds, 0, 1e6);
   bind.integer("joint_max_expansions", o.joint_max_expansions, 0, kMaxCount);
   bind.integer("pair_proof_expansions", o.pair_proof_expansions, 0, kMaxCount);
+  bind.integer("pockets", o.pockets, 0, 100000);
+  bind.integer("pocket_expansions", o.pocket_expansions, 1, kMaxCount);
   bind.flag("splice", o.splice);
   bind.finish();
   options_ = o;

@@ -5,6 +5,7 @@
 #include "fleet_planner/solvers/lns/joint_repair.h"
 #include "fleet_planner/solvers/lns/ordered_repair.h"
 #include "fleet_planner/solvers/lns/path_splice.h"
+#include "fleet_planner/solvers/lns/pocket_repair.h"
 #include "fleet_planner/solvers/search/joint_path_search.h"
 #include "lns_search.h"
 
@@ -22,7 +23,8 @@ bool LnsSearch::planOneByOne(const std::vector<int>& group) {
 
 // Replans the group jointly around all others' paths: first one after the other, in the
 // group's order and then in reverse, with the members not yet replanned at their starts
-// (ordered_repair.h: cheap, and collision-free if it works); then by LA-CBS within a small
+// (ordered_repair.h: cheap, and collision-free if it works); then two of them trading places
+// through a pocket (pocket_repair.h, collision-free too); then by LA-CBS within a small
 // share of the time left (others hard), and if that finds nothing, for a small group and once the
 // neighbourhood has grown to the whole subproblem, by a joint search (joint_path_search.h;
 // others soft); false if neither found a plan. A joint search that exhausts the group's joint
@@ -39,6 +41,7 @@ bool LnsSearch::planTogether(const std::vector<int>& group) {
     for (std::size_t k = 0; k < order.size(); ++k) table_.insert(order[k], (*paths)[k]);
     return true;
   }
+  if (planThroughPocket(group)) return true;
   const double seconds = std::min(options_.joint_seconds, problem_.deadline.remaining() / 4);
   const std::vector<StatePath> paths =
       jointRepair(space_, problem_, table_, group, seconds, options_.joint_max_expansions,
@@ -68,6 +71,30 @@ bool LnsSearch::planTogether(const std::vector<int>& group) {
     return false;
   }
   provePair(group);
+  return false;
+}
+
+// Two members of the group trade places through a pocket (pocket_repair.h), either of them
+// parking; the rest of the group is then replanned one by one. False (and none of the group in
+// the table) if no pocket worked or the rest could not be replanned.
+bool LnsSearch::planThroughPocket(const std::vector<int>& group) {
+  if (group.size() < 2 || options_.pockets <= 0) return false;
+  PocketRepairOptions o;
+  o.max_pockets = options_.pockets;
+  o.max_expansions = options_.pocket_expansions;
+  for (const auto& [through, parks] : {std::pair{group[0], group[1]}, std::pair{group[1], group[0]}}) {
+    const std::optional<std::vector<StatePath>> paths =
+        pocketRepair(space_, table_, through, parks, idealPath(through), problem_.deadline, o,
+                     stats_.low_level_expansions);
+    if (!paths) continue;
+    table_.insert(through, (*paths)[0]);
+    table_.insert(parks, (*paths)[1]);
+    if (planOneByOne(std::vector<int>(group.begin() + 2, group.end()))) return true;
+    for (int a : group) {
+      if (table_.contains(a)) table_.remove(a);
+    }
+    return false;
+  }
   return false;
 }
 

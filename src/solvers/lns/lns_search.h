@@ -77,7 +77,8 @@ class LnsSearch {
 
   // Replans the group jointly around all others' paths: first one after the other, in the
   // group's order and then in reverse, with the members not yet replanned at their starts
-  // (ordered_repair.h: cheap, and collision-free if it works); then by LA-CBS within a small
+  // (ordered_repair.h: cheap, and collision-free if it works); then two of them trading places
+  // through a pocket (pocket_repair.h, collision-free too); then by LA-CBS within a small
   // share of the time left (others hard), and if that finds nothing, for a small group and once the
   // neighbourhood has grown to the whole subproblem, by a joint search (joint_path_search.h;
   // others soft); false if neither found a plan. A joint search that exhausts the group's joint
@@ -86,6 +87,10 @@ class LnsSearch {
   // 4-5 s of the 7 s that LA-LNS had for a 12-robot level of maze-128-128-10 K=40, which it
   // otherwise solves in that time.
   bool planTogether(const std::vector<int>& group);
+
+  // Two members of the group trade places through a pocket (pocket_repair.h), either of them
+  // parking; the rest of the group is then replanned one by one. False if no pocket worked.
+  bool planThroughPocket(const std::vector<int>& group);
 
   // A pair of the knot that cannot reach its targets even alone among the static obstacles
   // proves that the subproblem has no plan (proof_): dropping robots and obstacles only makes a

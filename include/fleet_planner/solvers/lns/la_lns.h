@@ -17,7 +17,8 @@
 /// agent and up to two of its partners together around everybody else, for the knots that
 /// one-by-one replanning cannot untie: one after the other, collision-free, with the ones not
 /// yet replanned at their starts, in a random order and in reverse (ordered_repair.h); where
-/// that fails, by LA-CBS (joint_repair.h); and where that fails too, once the neighbourhood
+/// that fails, two of them trading places through a pocket that one of them waits in
+/// (pocket_repair.h); then by LA-CBS (joint_repair.h); and where that fails too, once the neighbourhood
 /// has grown to the whole subproblem, by a joint search (joint_path_search.h).
 ///
 /// Beyond the paper's backends. Serial: static footprints and the timed paths of other
@@ -57,6 +58,11 @@ struct LaLnsOptions {
   /// static obstacles by LA-LaCAM, with this many expansions: a pair that cannot reach its
   /// targets proves that the subproblem has no plan.
   long long pair_proof_expansions = 2'000'000;
+  /// Joint repair, after the ordered one: two agents of the group trading places through a
+  /// pocket (pocket_repair.h), with at most this many pockets tried per agent that parks
+  /// (0: never), with at most pocket_expansions expansions of its searches in all.
+  int pockets = 8;
+  long long pocket_expansions = 20'000;
   /// Before each repair, one local repair of a colliding agent (path_splice.h): a few steps of
   /// its path around one of its collisions replanned collision-free, the rest kept (delayed if
   /// need be).
