@@ -4,6 +4,7 @@
 
 #include "fleet_planner/infeasibility/infeasible_pairs.h"
 #include "fleet_planner/layered/step_aside.h"
+#include "fleet_planner/solvers/registry.h"
 #include "solving.h"
 
 namespace fleet_planner {
@@ -68,15 +69,35 @@ std::vector<StaticFootprint> Solving::standingInTheWay(std::size_t k) const {
                         std::max(options_.budget.step_aside_min_count, robots.size()));
 }
 
+// The standing robots on the paths of a plan of subproblem k's robots alone among the static
+// obstacles (LA-LNS within its share of the time; none if it finds no plan).
+std::vector<StaticFootprint> Solving::standingOnItsPlan(std::size_t k) const {
+  Subproblem sub;
+  sub.instance = &instance_;
+  sub.graphs = &graphs_;
+  sub.robots = order_[k].robots;
+  sub.seed = options_.seed + order_[k].seed_offset;
+  sub.deadline = deadline_.within(std::min(deadline_.remaining() * options_.budget.step_aside_plan_share,
+                                           options_.budget.step_aside_plan_max_s));
+  const SolveResult alone = makeSolver("la_lns", options_.backend_parameters)->solve(sub);
+  if (!alone.success()) return {};
+  return robotsOnPaths(graphs_, sub.robots, alone.paths, standingFor(k));
+}
+
 // Safeguard, before a merge: subproblem k solved again with the robots of other subproblems
-// near its robots' ways free to step aside (step_aside.h). For a serial backend it leaves its
+// near its robots' ways, or on the paths of a plan of its robots alone, free to step aside
+// (step_aside.h). For a serial backend it leaves its
 // cluster's chain: it and the rest of the chain become clusters of their own, so that it is
 // planned with the earlier levels at their targets and merged by delay. False if no robot
 // stands near.
 bool Solving::letStepAside(std::size_t k, const SolveResult& failed) {
   SolvedSubproblem& s = order_[k];
   s.step_aside_tried = true;
-  const std::vector<StaticFootprint> near = standingInTheWay(k);
+  std::vector<StaticFootprint> near = standingInTheWay(k);
+  for (const StaticFootprint& f : standingOnItsPlan(k)) {
+    const bool known = std::any_of(near.begin(), near.end(), [&](const StaticFootprint& g) { return g.robot == f.robot; });
+    if (!known) near.push_back(f);
+  }
   if (near.empty()) return false;
   for (const StaticFootprint& f : near) s.stepping_aside.push_back(f.robot);
   step_asides_.push_back("subproblem " + std::to_string(k) + " (" + idsOf(instance_, s.robots) + ") failed: " +

@@ -62,12 +62,16 @@ class Solving {
   std::optional<std::string> proveAmong(const std::vector<std::pair<int, int>>& pairs,
                                         const Deadline& deadline);
   // Safeguard, before a merge: subproblem k solved again with the robots of other subproblems
-  // near its robots' ways free to step aside (step_aside.h). For a serial backend it leaves its
+  // near its robots' ways, or on the paths of a plan of its robots alone, free to step aside
+  // (step_aside.h). For a serial backend it leaves its
   // cluster's chain: it and the rest of the chain become clusters of their own, so that it is
   // planned with the earlier levels at their targets and merged by delay. False if no robot
   // stands near.
   bool letStepAside(std::size_t k, const SolveResult& failed);
   std::vector<StaticFootprint> standingInTheWay(std::size_t k) const;
+  // The standing robots on the paths of a plan of subproblem k's robots alone among the static
+  // obstacles (LA-LNS within its share of the time; none if it finds no plan).
+  std::vector<StaticFootprint> standingOnItsPlan(std::size_t k) const;
   // Safeguard: merge subproblem k with the next one (or, for the last, with the one before);
   // their clusters become one. Results that depended on either are dropped.
   void mergeWithNeighbour(std::size_t k, const SolveResult& failed);

@@ -61,4 +61,28 @@ std::vector<StaticFootprint> robotsInTheWay(const Instance& instance, const Flee
   return out;
 }
 
+std::vector<StaticFootprint> robotsOnPaths(const FleetGraphs& graphs, const std::vector<int>& robots,
+                                           const std::vector<Path>& paths,
+                                           const std::vector<StaticFootprint>& standing) {
+  std::vector<StaticFootprint> out;
+  if (robots.empty()) return out;
+  const ActionModel model = graphs.graph(robots[0]).actionModel();
+  for (const StaticFootprint& f : standing) {
+    const FootprintCells& B = graphs.cells(f.robot);
+    const Path still{f.pose};
+    const path_steps::Box box = path_steps::boxOf(B, still);
+    bool met = false;
+    for (std::size_t i = 0; i < robots.size() && !met; ++i) {
+      const Path& p = paths[i];
+      if (p.empty()) continue;
+      const FootprintCells& A = graphs.cells(robots[i]);
+      if (!path_steps::boxOf(A, p).meets(box)) continue;
+      for (int t = 0; t < static_cast<int>(p.size()) && !met; ++t)
+        met = path_steps::stepsMeet(A, p, t, B, still, 0, model);
+    }
+    if (met) out.push_back(f);
+  }
+  return out;
+}
+
 }  // namespace fleet_planner

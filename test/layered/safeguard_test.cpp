@@ -132,6 +132,25 @@ TEST(StepAside, KeepsTheNearestWhenCapped) {
   EXPECT_EQ(one[0].robot, 2);
 }
 
+TEST(StepAside, PicksTheStandingRobotsAPlanDrivesThrough) {
+  // A drives down column 0 and then east along row 11: it passes "on" (row 11), brushes nobody
+  // else; "beside" stands next to its way without touching it.
+  const GridMap map = test::freeMap(12, 12);
+  Instance in;
+  in.robots = {dot("A", {0, 0, 2}, {11, 11, 0}), dot("on", {6, 11, 0}, {6, 11, 0}),
+               dot("beside", {1, 5, 0}, {1, 5, 0})};
+  const FleetGraphs graphs(map, footprintsOf(in));
+  Path way;
+  for (int y = 0; y <= 11; ++y) way.push_back({0, y, 2});
+  way.push_back({0, 11, 0});
+  for (int x = 1; x <= 11; ++x) way.push_back({x, 11, 0});
+  const std::vector<StaticFootprint> standing{{1, {6, 11, 0}}, {2, {1, 5, 0}}};
+  const std::vector<StaticFootprint> on = robotsOnPaths(graphs, {0}, {way}, standing);
+  ASSERT_EQ(on.size(), 1u);
+  EXPECT_EQ(on[0].robot, 1);
+  EXPECT_TRUE(robotsOnPaths(graphs, {0}, {Path{{0, 0, 2}}}, standing).empty());
+}
+
 TEST(PlanMerge, ARobotWithAPathContinuesItAfterItsEnd) {
   // h drove to (3, 0) earlier; now it steps into the pocket and back. Its new part starts once
   // its earlier path has ended, and its own earlier path does not delay it further.

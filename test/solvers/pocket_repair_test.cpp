@@ -45,7 +45,7 @@ TEST(PocketRepair, TheParkingAgentWaitsInThePocketAndNobodyCollides) {
   }
   for (const auto& [through, parks] : {std::pair{1, 2}, std::pair{2, 1}}) {
     expansions = 0;
-    const auto paths = pocketRepair(space, table, through, parks, shortestPath(space, through),
+    const auto paths = pocketRepair(space, table, through, {parks}, shortestPath(space, through),
                                     Deadline::in(5.0), PocketRepairOptions{}, expansions);
     ASSERT_TRUE(paths.has_value()) << space.label(parks) << " parking";
     EXPECT_GT(expansions, 0);
@@ -62,7 +62,7 @@ TEST(PocketRepair, TheParkingAgentWaitsInThePocketAndNobodyCollides) {
     const Path& parked = plan.paths[parks];
     EXPECT_TRUE(std::any_of(parked.begin(), parked.end(), [](const GridPose& p) { return p.y > 0; }))
         << space.label(parks) << " never enters the pocket";
-    const auto again = pocketRepair(space, table, through, parks, shortestPath(space, through),
+    const auto again = pocketRepair(space, table, through, {parks}, shortestPath(space, through),
                                     Deadline::in(5.0), PocketRepairOptions{}, expansions);
     ASSERT_TRUE(again.has_value());
     EXPECT_EQ(*again, *paths) << "same input, same paths";
@@ -76,7 +76,7 @@ TEST(PocketRepair, NoPocketNoRepair) {
   SoftPathTable table(space);
   long long expansions = 0;
   for (const auto& [through, parks] : {std::pair{1, 2}, std::pair{2, 1}}) {
-    EXPECT_FALSE(pocketRepair(space, table, through, parks, shortestPath(space, through),
+    EXPECT_FALSE(pocketRepair(space, table, through, {parks}, shortestPath(space, through),
                               Deadline::in(5.0), PocketRepairOptions{}, expansions));
   }
   EXPECT_FALSE(table.contains(1) || table.contains(2));

@@ -36,6 +36,11 @@ struct TimeBudget {
   /// step_aside_min_count.
   int step_aside_margin = 2;
   std::size_t step_aside_min_count = 8;
+  /// And the standing robots on the paths of a plan of the failed subproblem's robots alone
+  /// among the static obstacles (LA-LNS), found within this share of the time left, at most
+  /// step_aside_plan_max_s seconds.
+  double step_aside_plan_share = 0.1;
+  double step_aside_plan_max_s = 2.0;
 };
 
 }  // namespace fleet_planner

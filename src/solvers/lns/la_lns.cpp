@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <numeric>
 
+#include "fleet_planner/solvers/lns/stage_clearing.h"
 #include "fleet_planner/solvers/registry.h"
 #include "fleet_planner/solvers/search/safe_interval_search.h"
 #include "fleet_planner/solvers/search/soft_path_search.h"
@@ -37,6 +38,9 @@ LnsSearch::LnsSearch(const SearchSpace& space, const Subproblem& problem, const 
 }
 
 SolveResult LnsSearch::run() {
+  if (!problem_.returning.empty()) {
+    if (std::optional<SolveResult> cleared = clearedStage()) return *cleared;
+  }
   std::vector<int> order(n_);
   std::iota(order.begin(), order.end(), 0);
   // Longest first: the agents with most to do get the freest space.
@@ -71,6 +75,42 @@ SolveResult LnsSearch::run() {
       return r;
     }
   }
+}
+
+// With returning robots (robots of other subproblems stepping aside): a plan of the others
+// made without them, and the returning robots in its way clearing the stage for it
+// (stage_clearing.h); none if either fails.
+std::optional<SolveResult> LnsSearch::clearedStage() {
+  std::vector<bool> returning(n_, false);
+  Subproblem without;
+  without.instance = problem_.instance;
+  without.graphs = problem_.graphs;
+  without.moving = problem_.moving;
+  without.seed = problem_.seed;
+  without.deadline = problem_.deadline.within(std::min(problem_.deadline.remaining() / 10, 2.0));
+  std::vector<int> movers;
+  for (int a = 0; a < n_; ++a) {
+    const int r = space_.robot(a);
+    returning[a] = std::any_of(problem_.returning.begin(), problem_.returning.end(),
+                               [&](const StaticFootprint& f) { return f.robot == r; });
+    if (!returning[a]) {
+      movers.push_back(a);
+      without.robots.push_back(r);
+    }
+  }
+  if (movers.empty()) return std::nullopt;
+  const SolveResult planned = LaLns(options_).solve(without);
+  stats_.low_level_expansions += planned.stats.low_level_expansions;
+  if (!planned.success()) return std::nullopt;
+  std::vector<StatePath> alone(n_);
+  for (std::size_t k = 0; k < movers.size(); ++k) {
+    for (const GridPose& p : planned.paths[k]) alone[movers[k]].push_back(space_.graph(movers[k]).id(p));
+  }
+  const std::optional<std::vector<StatePath>> paths =
+      clearTheStage(space_, returning, alone, problem_.deadline, options_.pockets,
+                    options_.max_expansions_per_search, stats_.low_level_expansions);
+  if (!paths) return std::nullopt;
+  return success(*paths);
 }
 
 bool LnsSearch::mayGiveUp() {

@@ -74,26 +74,26 @@ bool LnsSearch::planTogether(const std::vector<int>& group) {
   return false;
 }
 
-// Two members of the group trade places through a pocket (pocket_repair.h), either of them
-// parking; the rest of the group is then replanned one by one. False (and none of the group in
-// the table) if no pocket worked or the rest could not be replanned.
+// Each member of the group in turn drives to its target while the others wait in pockets off
+// its way and then drive on, in the group's order (pocket_repair.h). False (and none of the
+// group in the table) if no pocket worked.
 bool LnsSearch::planThroughPocket(const std::vector<int>& group) {
   if (group.size() < 2 || options_.pockets <= 0) return false;
   PocketRepairOptions o;
   o.max_pockets = options_.pockets;
   o.max_expansions = options_.pocket_expansions;
-  for (const auto& [through, parks] : {std::pair{group[0], group[1]}, std::pair{group[1], group[0]}}) {
+  for (int through : group) {
+    std::vector<int> parkers;
+    for (int a : group) {
+      if (a != through) parkers.push_back(a);
+    }
     const std::optional<std::vector<StatePath>> paths =
-        pocketRepair(space_, table_, through, parks, idealPath(through), problem_.deadline, o,
+        pocketRepair(space_, table_, through, parkers, idealPath(through), problem_.deadline, o,
                      stats_.low_level_expansions);
     if (!paths) continue;
     table_.insert(through, (*paths)[0]);
-    table_.insert(parks, (*paths)[1]);
-    if (planOneByOne(std::vector<int>(group.begin() + 2, group.end()))) return true;
-    for (int a : group) {
-      if (table_.contains(a)) table_.remove(a);
-    }
-    return false;
+    for (std::size_t i = 0; i < parkers.size(); ++i) table_.insert(parkers[i], (*paths)[i + 1]);
+    return true;
   }
   return false;
 }

@@ -43,6 +43,11 @@ class LnsSearch {
   // " (a & b, c & d, ...)": the first few colliding pairs, to say where the plan is stuck.
   std::string somePairs() const;
 
+  // With returning robots (robots of other subproblems stepping aside): a plan of the others
+  // made without them (LA-LNS, at most a tenth of the time left and 2 s), and the returning
+  // robots in its way clearing the stage for it (stage_clearing.h); none if either fails.
+  std::optional<SolveResult> clearedStage();
+
   // A path for a, around the agents planned so far as soft obstacles; if that search gives up,
   // its shortest path in the static world and the other subproblems' timed paths.
   std::optional<SolveResult> initialPath(int a, StatePath& path);
@@ -88,8 +93,9 @@ class LnsSearch {
   // otherwise solves in that time.
   bool planTogether(const std::vector<int>& group);
 
-  // Two members of the group trade places through a pocket (pocket_repair.h), either of them
-  // parking; the rest of the group is then replanned one by one. False if no pocket worked.
+  // Each member of the group in turn drives to its target while the others wait in pockets off
+  // its way and then drive on, in the group's order (pocket_repair.h). False (and none of the
+  // group in the table) if no pocket worked.
   bool planThroughPocket(const std::vector<int>& group);
 
   // A pair of the knot that cannot reach its targets even alone among the static obstacles

@@ -5,20 +5,17 @@
 #include <cmath>
 #include <cstdlib>
 
+#include "fleet_planner/model/action.h"
 #include "fleet_planner/solvers/search/safe_interval_search.h"
 
 namespace fleet_planner {
 
-namespace {
-
-// Pockets for agent b: states reachable from its start (breadth-first over its graph's edges)
-// from which it can reach its target, where b's footprint covers no cell of `way` (true: a cell
-// that agent a's footprint covers on its way) and meets no agent's final state in `table`,
-// spread `spacing` cells apart (Chebyshev), the nearest first. A filter only: the legs' searches
-// decide, so the way's rotation sweeps and the static sweeps of b's edges are left out.
-std::vector<StateId> pocketsFor(const SearchSpace& space, int b, const SoftPathTable& table,
-                                const std::vector<char>& way, int spacing,
-                                const PocketRepairOptions& options) {
+// Breadth-first from b's start; the footprint checks only on states far enough from the
+// pockets already found.
+std::vector<StateId> pocketsOffWay(const SearchSpace& space, int b, const SoftPathTable& table,
+                                   const std::vector<char>& way, const PocketRepairOptions& options) {
+  const int spacing = std::max(
+      1, static_cast<int>(std::ceil(std::sqrt(static_cast<double>(space.cells(b).maxNormSq())))) / 2);
   const StateGraph& g = space.graph(b);
   std::vector<char> seen(static_cast<std::size_t>(g.stateIdCount()), 0);
   std::vector<StateId> queue{space.start(b)};
@@ -52,61 +49,91 @@ std::vector<StateId> pocketsFor(const SearchSpace& space, int b, const SoftPathT
   return pockets;
 }
 
-// The cells agent a's footprint covers at the states of `path`.
-std::vector<char> cellsOfWay(const SearchSpace& space, int a, const StatePath& path) {
+void markWay(const SearchSpace& space, int a, const StatePath& path, std::vector<char>& way) {
   const StateGraph& g = space.graph(a);
-  std::vector<char> way(static_cast<std::size_t>(g.width()) * g.height(), 0);
-  StateId last = kNoState;
-  for (StateId s : path) {
-    if (s == last) continue;
-    last = s;
-    const GridPose p = g.pose(s);
-    forEachMapCell(space.cells(a).body(p.heading), {p.x, p.y}, g.width(), g.height(),
+  way.resize(static_cast<std::size_t>(g.width()) * g.height(), 0);
+  for (std::size_t t = 0; t < path.size(); ++t) {
+    const GridPose p = g.pose(path[t]);
+    Action act = Action::Wait;
+    if (t + 1 < path.size()) act = actionBetween(p, g.pose(path[t + 1]), g.actionModel()).value_or(Action::Wait);
+    forEachMapCell(space.cells(a).swept(p.heading, act), {p.x, p.y}, g.width(), g.height(),
                    [&](std::size_t cell) { way[cell] = 1; });
   }
-  return way;
 }
 
-}  // namespace
-
 std::optional<std::vector<StatePath>> pocketRepair(const SearchSpace& space, SoftPathTable& table,
-                                                   int through, int parks,
+                                                   int through, const std::vector<int>& parkers,
                                                    const StatePath& through_way,
                                                    const Deadline& deadline,
                                                    const PocketRepairOptions& options,
                                                    long long& expansions) {
-  if (through_way.empty()) return std::nullopt;
-  const int radius =
-      static_cast<int>(std::ceil(std::sqrt(static_cast<double>(space.cells(parks).maxNormSq()))));
-  const std::vector<StateId> pockets =
-      pocketsFor(space, parks, table, cellsOfWay(space, through, through_way), std::max(1, radius / 2), options);
+  if (through_way.empty() || parkers.empty()) return std::nullopt;
+  std::vector<char> way;
+  markWay(space, through, through_way, way);
   long long spent = 0;
-  auto budget = [&] { return options.max_expansions - spent; };
-  for (StateId pocket : pockets) {
-    if (deadline.expired() || budget() <= 0) break;
-    // Leg 1: into the pocket, at the earliest; the path then stands there for good.
-    SafeIntervalResult in = safeIntervalSegment(space, parks, table, space.start(parks), 0, pocket, 0,
-                                                SoftPathTable::kNever / 2, deadline, budget());
+  auto budget = [&] { return std::max(0LL, options.max_expansions - spent); };
+  const std::size_t m = parkers.size();
+  std::vector<StatePath> legs(m);  // into the pocket, at the earliest; then standing there
+  // Leg 1 of parker i into one of its pockets (the first that works), parked in the table.
+  auto park = [&](std::size_t i, StateId pocket) {
+    SafeIntervalResult in = safeIntervalSegment(space, parkers[i], table, space.start(parkers[i]), 0, pocket,
+                                                0, SoftPathTable::kNever / 2, deadline, budget());
     spent += in.expansions;
-    if (in.outcome != SafeIntervalResult::Outcome::Found) continue;
-    table.insert(parks, in.path);
+    if (in.outcome != SafeIntervalResult::Outcome::Found) return false;
+    legs[i] = std::move(in.path);
+    table.insert(parkers[i], legs[i]);
+    return true;
+  };
+  auto undo = [&](std::size_t parked) {
+    for (std::size_t i = 0; i < parked; ++i) table.remove(parkers[i]);
+  };
+  for (std::size_t i = 0; i + 1 < m; ++i) {
+    bool parked = false;
+    for (StateId pocket : pocketsOffWay(space, parkers[i], table, way, options)) {
+      if (deadline.expired() || budget() <= 0) break;
+      if ((parked = park(i, pocket))) break;
+    }
+    if (!parked) {
+      undo(i);
+      expansions += spent;
+      return std::nullopt;
+    }
+  }
+  // The last parker tries its pockets with the whole manoeuvre: the others pass, then the
+  // parkers drive on, in their order, each around everything planned so far.
+  for (StateId pocket : pocketsOffWay(space, parkers[m - 1], table, way, options)) {
+    if (deadline.expired() || budget() <= 0) break;
+    if (!park(m - 1, pocket)) continue;
     SafeIntervalResult past = safeIntervalSearch(space, through, table, deadline, budget());
     spent += past.expansions;
-    table.remove(parks);
-    if (past.outcome != SafeIntervalResult::Outcome::Found) continue;
-    // Leg 3: out of the pocket once parked, around the other's path.
+    if (past.outcome != SafeIntervalResult::Outcome::Found) {
+      table.remove(parkers[m - 1]);
+      continue;
+    }
     table.insert(through, past.path);
-    const int parked_at = static_cast<int>(in.path.size()) - 1;
-    SafeIntervalResult out = safeIntervalSegment(space, parks, table, pocket, parked_at, pocket,
-                                                 SoftPathTable::kNever, 0, deadline, budget());
-    spent += out.expansions;
+    std::vector<StatePath> paths{std::move(past.path)};
+    for (std::size_t i = 0; i < m; ++i) {
+      table.remove(parkers[i]);
+      const StateId at = legs[i].back();
+      const int parked_at = static_cast<int>(legs[i].size()) - 1;
+      SafeIntervalResult out = safeIntervalSegment(space, parkers[i], table, at, parked_at, at,
+                                                   SoftPathTable::kNever, 0, deadline, budget());
+      spent += out.expansions;
+      StatePath whole(legs[i].begin(), legs[i].end() - 1);
+      whole.insert(whole.end(), out.path.begin(), out.path.end());
+      table.insert(parkers[i], out.outcome == SafeIntervalResult::Outcome::Found ? whole : legs[i]);
+      if (out.outcome != SafeIntervalResult::Outcome::Found) break;
+      paths.push_back(std::move(whole));
+    }
     table.remove(through);
-    if (out.outcome != SafeIntervalResult::Outcome::Found) continue;
-    expansions += spent;
-    StatePath parked(in.path.begin(), in.path.end() - 1);
-    parked.insert(parked.end(), out.path.begin(), out.path.end());
-    return std::vector<StatePath>{std::move(past.path), std::move(parked)};
+    for (std::size_t i = 0; i < m; ++i) table.remove(parkers[i]);
+    if (paths.size() == m + 1) {
+      expansions += spent;
+      return paths;
+    }
+    for (std::size_t i = 0; i + 1 < m; ++i) table.insert(parkers[i], legs[i]);
   }
+  undo(m - 1);
   expansions += spent;
   return std::nullopt;
 }

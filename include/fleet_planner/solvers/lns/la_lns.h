@@ -17,9 +17,13 @@
 /// agent and up to two of its partners together around everybody else, for the knots that
 /// one-by-one replanning cannot untie: one after the other, collision-free, with the ones not
 /// yet replanned at their starts, in a random order and in reverse (ordered_repair.h); where
-/// that fails, two of them trading places through a pocket that one of them waits in
-/// (pocket_repair.h); then by LA-CBS (joint_repair.h); and where that fails too, once the neighbourhood
+/// that fails, each of them in turn driving through while the others wait in pockets off its
+/// way (pocket_repair.h); then by LA-CBS (joint_repair.h); and where that fails too, once the neighbourhood
 /// has grown to the whole subproblem, by a joint search (joint_path_search.h).
+///
+/// A subproblem with returning robots (robots of other subproblems stepping aside) is first
+/// tried as a stage to clear (stage_clearing.h): the others planned without them, the returning
+/// robots in that plan's way parked in pockets meanwhile.
 ///
 /// Beyond the paper's backends. Serial: static footprints and the timed paths of other
 /// subproblems are hard obstacles. Incomplete: the only proofs it gives are a knot whose joint

@@ -1,18 +1,17 @@
 #pragma once
-/// A repair of LA-LNS (la_lns.h) for two agents that must trade places: one of them first drives
-/// into a pocket off the other's way and waits there, the other drives to its target, and then
-/// the first leaves the pocket for its own target. Each of the three legs is a collision-free
-/// safe interval search (safe_interval_search.h) around every other agent's path, so the result
-/// collides with nobody.
+/// A repair of LA-LNS (la_lns.h) for agents that must trade places: the others first drive into
+/// pockets off one agent's way and wait there, that agent drives to its target, and then the
+/// others leave their pockets for their own targets. Each leg is a collision-free safe interval
+/// search (safe_interval_search.h) around every path planned so far, so the result collides
+/// with nobody.
 ///
 /// Two large robots in an aisle between shelves, each starting on the other's way, collide
 /// whatever one of them does around the other's fixed path, and the ordered repair
 /// (ordered_repair.h) fails in both orders: the second robot still stands where the first must
 /// pass. A joint search of the pair finds the manoeuvre only after a search over joint states
 /// that grows with the detour (LA-LaCAM needed 431,000 configurations for such a pair of
-/// Huskies at lattice step 2). Here the pocket is searched instead: the parking robot's states
-/// in breadth-first order from its start, kept when its footprint there meets neither the other
-/// robot's shortest path nor any agent's final state, and spread at least half its radius apart.
+/// Huskies at lattice step 2). Here the pocket is searched instead (pocketsOffWay below). A third robot
+/// whose target lies in the aisle waits in a pocket too, and arrives once the two have passed.
 #include <optional>
 #include <vector>
 
@@ -29,14 +28,27 @@ struct PocketRepairOptions {
   long long max_expansions = 20'000;
 };
 
-/// Paths {through's, parks's} (neither agent in `table`): `parks` drives to a pocket and waits
-/// there while `through` drives to its target along a path that `through_way` (its shortest
-/// path, ignoring other agents) suggests keeping clear; then `parks` drives to its own target.
-/// Both collide with no agent of `table` and not with each other. None if no pocket tried
-/// works. `table` is used as scratch and is as it was on return; the expansions spent are added
-/// to `expansions`. Deterministic.
+/// Marks in `way` (a flag per map cell, sized to the map if empty) the cells agent a's footprint
+/// covers along `path`: at each state and on the move to the next.
+void markWay(const SearchSpace& space, int a, const StatePath& path, std::vector<char>& way);
+
+/// Pockets for agent b, the nearest first (at most options.max_pockets): states reachable from
+/// its start (breadth-first over its graph's edges, at most options.max_states) from which it
+/// can reach its target, where its footprint covers no cell marked in `way` and meets no agent's
+/// final state in `table`, spread half its radius apart. A filter only: static sweeps of the
+/// edges are left to the searches that drive there.
+std::vector<StateId> pocketsOffWay(const SearchSpace& space, int b, const SoftPathTable& table,
+                                   const std::vector<char>& way, const PocketRepairOptions& options);
+
+/// Paths {through's, then each parker's} (none of these agents in `table`): the parkers drive
+/// to pockets off the way `through_way` (through's shortest path, ignoring other agents) and
+/// wait there, one after the other, while `through` drives to its target; then the parkers
+/// drive to their targets, in their order. Each parker but the last takes the first pocket it
+/// reaches; the last tries its pockets in turn. All collide with no agent of `table` and not
+/// with each other. None if no pocket tried works. `table` is used as scratch and is as it was
+/// on return; the expansions spent are added to `expansions`. Deterministic.
 std::optional<std::vector<StatePath>> pocketRepair(const SearchSpace& space, SoftPathTable& table,
-                                                   int through, int parks,
+                                                   int through, const std::vector<int>& parkers,
                                                    const StatePath& through_way,
                                                    const Deadline& deadline,
                                                    const PocketRepairOptions& options,
