@@ -70,8 +70,9 @@ std::vector<StaticFootprint> Solving::standingInTheWay(std::size_t k) const {
 }
 
 // The standing robots on the paths of a plan of subproblem k's robots alone among the static
-// obstacles (LA-LNS within its share of the time; none if it finds no plan).
+// obstacles (LA-LNS within its share of the time; none if it finds no plan or k is large).
 std::vector<StaticFootprint> Solving::standingOnItsPlan(std::size_t k) const {
+  if (order_[k].robots.size() > options_.budget.step_aside_plan_max_robots) return {};
   Subproblem sub;
   sub.instance = &instance_;
   sub.graphs = &graphs_;

@@ -49,6 +49,7 @@ void LaLns::configure(const BackendOptionValues& values) {
   bind.integer("pair_proof_expansions", o.pair_proof_expansions, 0, kMaxCount);
   bind.integer("pockets", o.pockets, 0, 100000);
   bind.integer("pocket_expansions", o.pocket_expansions, 1, kMaxCount);
+  bind.integer("stage_robots", o.stage_robots, 0, 100000);
   bind.flag("splice", o.splice);
   bind.finish();
   options_ = o;

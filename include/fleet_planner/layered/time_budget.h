@@ -36,9 +36,11 @@ struct TimeBudget {
   /// step_aside_min_count.
   int step_aside_margin = 2;
   std::size_t step_aside_min_count = 8;
-  /// And the standing robots on the paths of a plan of the failed subproblem's robots alone
-  /// among the static obstacles (LA-LNS), found within this share of the time left, at most
-  /// step_aside_plan_max_s seconds.
+  /// And, for a subproblem of at most step_aside_plan_max_robots robots (a knot; a large level
+  /// seldom finds its plan alone in that time either), the standing robots on the paths of a
+  /// plan of its robots alone among the static obstacles (LA-LNS), found within this share of
+  /// the time left, at most step_aside_plan_max_s seconds.
+  std::size_t step_aside_plan_max_robots = 8;
   double step_aside_plan_share = 0.1;
   double step_aside_plan_max_s = 2.0;
 };

@@ -98,7 +98,7 @@ std::optional<SolveResult> LnsSearch::clearedStage() {
       without.robots.push_back(r);
     }
   }
-  if (movers.empty()) return std::nullopt;
+  if (movers.empty() || static_cast<int>(movers.size()) > options_.stage_robots) return std::nullopt;
   const SolveResult planned = LaLns(options_).solve(without);
   stats_.low_level_expansions += planned.stats.low_level_expansions;
   if (!planned.success()) return std::nullopt;

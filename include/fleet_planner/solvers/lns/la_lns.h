@@ -67,6 +67,9 @@ struct LaLnsOptions {
   /// (0: never), with at most pocket_expansions expansions of its searches in all.
   int pockets = 8;
   long long pocket_expansions = 20'000;
+  /// With returning robots, the stage is cleared (stage_clearing.h) only for at most this many
+  /// other robots (0: never): a large level seldom finds its plan alone in the time given.
+  int stage_robots = 8;
   /// Before each repair, one local repair of a colliding agent (path_splice.h): a few steps of
   /// its path around one of its collisions replanned collision-free, the rest kept (delayed if
   /// need be).
