@@ -97,7 +97,8 @@ std::optional<std::vector<StatePath>> clearTheStage(const SearchSpace& space, co
   for (int a : movers) {
     StatePath p(static_cast<std::size_t>(delay), space.start(a));
     p.insert(p.end(), alone[a].begin(), alone[a].end());
-    if (!table.partners(a, p).empty()) {
+    // Delayed, it meets other subproblems' timed paths at other steps than the plan did.
+    if (!drivable(space, a, p) || !table.partners(a, p).empty()) {
       expansions += spent;
       return std::nullopt;
     }
