@@ -50,6 +50,9 @@ void LaLns::configure(const BackendOptionValues& values) {
   bind.integer("pockets", o.pockets, 0, 100000);
   bind.integer("pocket_expansions", o.pocket_expansions, 1, kMaxCount);
   bind.integer("stage_robots", o.stage_robots, 0, 100000);
+  bind.integer("parking_robots", o.parking_robots, 1, 100000);
+  bind.integer("parking_expansions", o.parking_expansions, 0, kMaxCount);
+  bind.number("parking_share", o.parking_share, 0, 1);
   bind.flag("splice", o.splice);
   bind.finish();
   options_ = o;

@@ -10,6 +10,7 @@
 #include "fleet_planner/model/footprint_cells.h"
 #include "fleet_planner/model/instance_check.h"
 #include "fleet_planner/solvers/registry.h"
+#include "fleet_planner/solvers/search/solve_common.h"
 
 namespace fleet_planner::test {
 
@@ -115,6 +116,15 @@ std::string toInstanceOrder(const World& world, const Subproblem& sub,
     plan.paths.push_back(paths[slot[r]]);
   }
   return "";
+}
+
+ValidationResult validateStatePaths(const World& world, const Subproblem& sub, const SearchSpace& space,
+                                    const std::vector<StatePath>& paths) {
+  Instance planned;
+  Plan plan;
+  const std::string shape = toInstanceOrder(world, sub, toPosePaths(space, paths), planned, plan);
+  EXPECT_TRUE(shape.empty()) << shape;
+  return validatePlan(world.map, planned, plan);
 }
 
 Outcome solveWith(Solver& solver, const World& world, const Subproblem& sub) {

@@ -82,6 +82,11 @@ struct Outcome {
 std::string toInstanceOrder(const World& world, const Subproblem& sub,
                             const std::vector<Path>& paths, Instance& planned, Plan& plan);
 
+/// The validator's verdict on state paths of `sub`'s robots, one per Subproblem::robots entry
+/// (returning robots from and back to their poses); a test failure if they do not fit.
+ValidationResult validateStatePaths(const World& world, const Subproblem& sub, const SearchSpace& space,
+                                    const std::vector<StatePath>& paths);
+
 /// Runs `solver.solve(sub)` timed with steady_clock; on success converts the paths and
 /// validates the plan.
 Outcome solveWith(Solver& solver, const World& world, const Subproblem& sub);

@@ -20,17 +20,6 @@ StatePath shortestPath(const SearchSpace& space, int a) {
   return r.outcome == LowLevelResult::Outcome::Found ? r.path : StatePath{};
 }
 
-// The validator's verdict on state paths of `sub`'s robots (returning robots from and back to
-// their poses).
-ValidationResult validateAll(const World& w, const Subproblem& sub, const SearchSpace& space,
-                             const std::vector<StatePath>& paths) {
-  Instance planned;
-  Plan plan;
-  const std::string shape = toInstanceOrder(w, sub, toPosePaths(space, paths), planned, plan);
-  EXPECT_TRUE(shape.empty()) << shape;
-  return validatePlan(w.map, planned, plan);
-}
-
 // A corridor with one pocket, three cells deep, below x = 6: "a" drives east through "b"'s
 // start, "b" west through "a"'s; "r" (of another subproblem) stands in the pocket's mouth.
 struct MouthWorld {
@@ -65,7 +54,7 @@ TEST(StageClearing, TheRobotInTheWayBacksIntoThePocketAndReturns) {
   const auto paths = clearTheStage(space, {false, false, true}, without, Deadline::in(5.0), 8, 100'000, expansions);
   ASSERT_TRUE(paths.has_value());
   EXPECT_GT(expansions, 0);
-  const ValidationResult v = validateAll(m.w, m.all, space, *paths);
+  const ValidationResult v = validateStatePaths(m.w, m.all, space, *paths);
   EXPECT_TRUE(v.valid()) << violationName(v.violation.kind);
   const Path r = toPosePaths(space, *paths)[2];
   EXPECT_EQ(r.front(), (GridPose{6, 1, 2}));
@@ -103,7 +92,7 @@ TEST(PocketRepair, TwoRobotsWaitInTwoPocketsWhileAThirdPasses) {
                                   PocketRepairOptions{}, expansions);
   ASSERT_TRUE(paths.has_value());
   EXPECT_FALSE(table.contains(0) || table.contains(1) || table.contains(2)) << "the table is left as it was";
-  const ValidationResult v = validateAll(w, sub, space, {(*paths)[0], (*paths)[2], (*paths)[1]});
+  const ValidationResult v = validateStatePaths(w, sub, space, {(*paths)[0], (*paths)[2], (*paths)[1]});
   EXPECT_TRUE(v.valid()) << violationName(v.violation.kind);
 }
 

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <numeric>
 
+#include "fleet_planner/solvers/lns/parking_plan.h"
 #include "fleet_planner/solvers/lns/stage_clearing.h"
 #include "fleet_planner/solvers/registry.h"
 #include "fleet_planner/solvers/search/safe_interval_search.h"
@@ -47,9 +48,21 @@ SolveResult LnsSearch::run() {
   std::stable_sort(order.begin(), order.end(), [&](int x, int y) {
     return space_.distance(x, space_.start(x)) > space_.distance(y, space_.start(y));
   });
+  std::vector<char> parked(n_, 0);
+  const bool tried_parking = options_.parking_expansions > 0 && n_ >= options_.parking_robots;
+  if (tried_parking) {
+    if (std::optional<SolveResult> done = parkFirst(order, parked)) return *done;
+  }
   for (int a : order) {
+    if (parked[a]) continue;
     StatePath path;
-    if (std::optional<SolveResult> stop = initialPath(a, path)) return *stop;
+    // A robot the parking plan left has no collision-free path: it starts from its shortest
+    // one, and the repairs take it from there (a soft search around the parking plan's long
+    // paths costs much of the time the repairs need).
+    if (tried_parking) path = idealPath(a);
+    if (path.empty()) {
+      if (std::optional<SolveResult> stop = initialPath(a, path)) return *stop;
+    }
     table_.insert(a, path);
     ++planned_;
   }
@@ -75,6 +88,25 @@ SolveResult LnsSearch::run() {
       return r;
     }
   }
+}
+
+// A packed subproblem: first the robots that get home one at a time, pushing the others aside
+// (parking_plan.h), each put in the table and marked in `parked`; the plan if all got home.
+std::optional<SolveResult> LnsSearch::parkFirst(const std::vector<int>& order, std::vector<char>& parked) {
+  ParkingPlanOptions o;
+  o.max_pockets = std::max(1, options_.pockets);
+  o.max_expansions = options_.parking_expansions;
+  const Deadline deadline = problem_.deadline.within(problem_.deadline.remaining() * options_.parking_share);
+  const std::optional<ParkingPlan> plan = parkingPlan(space_, order, deadline, o, stats_.low_level_expansions);
+  if (!plan) return std::nullopt;
+  if (plan->robots_home == n_) return success(plan->paths);
+  for (int a = 0; a < n_; ++a) {
+    if (!plan->home[a]) continue;
+    table_.insert(a, plan->paths[a]);
+    parked[a] = 1;
+    ++planned_;
+  }
+  return std::nullopt;
 }
 
 // With returning robots (robots of other subproblems stepping aside): a plan of the others

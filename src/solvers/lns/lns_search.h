@@ -47,6 +47,7 @@ class LnsSearch {
   // made without them (LA-LNS, at most a tenth of the time left and 2 s), and the returning
   // robots in its way clearing the stage for it (stage_clearing.h); none if either fails.
   std::optional<SolveResult> clearedStage();
+  std::optional<SolveResult> parkFirst(const std::vector<int>& order, std::vector<char>& parked);
 
   // A path for a, around the agents planned so far as soft obstacles; if that search gives up,
   // its shortest path in the static world and the other subproblems' timed paths.

@@ -10,16 +10,18 @@
 
 namespace fleet_planner {
 
-// Breadth-first from b's start; the footprint checks only on states far enough from the
+// Breadth-first from `from`; the footprint checks only on states far enough from the
 // pockets already found.
 std::vector<StateId> pocketsOffWay(const SearchSpace& space, int b, const SoftPathTable& table,
-                                   const std::vector<char>& way, const PocketRepairOptions& options) {
+                                   const std::vector<char>& way, const PocketRepairOptions& options,
+                                   StateId from) {
+  if (from == kNoState) from = space.start(b);
   const int spacing = std::max(
       1, static_cast<int>(std::ceil(std::sqrt(static_cast<double>(space.cells(b).maxNormSq())))) / 2);
   const StateGraph& g = space.graph(b);
   std::vector<char> seen(static_cast<std::size_t>(g.stateIdCount()), 0);
-  std::vector<StateId> queue{space.start(b)};
-  seen[space.start(b)] = 1;
+  std::vector<StateId> queue{from};
+  seen[from] = 1;
   std::vector<StateId> pockets;
   std::vector<int> met;
   const int settled = table.lastMove() + 1;
@@ -30,6 +32,11 @@ std::vector<StateId> pocketsOffWay(const SearchSpace& space, int b, const SoftPa
     g.forEachSuccessor(s, [&](Action, StateId next) {
       if (seen[next] || space.distance(b, next) < 0) return;
       seen[next] = 1;
+      if (options.around_final_states) {
+        met.clear();
+        table.collisionsHolding(b, next, settled, met);
+        if (!met.empty()) return;
+      }
       queue.push_back(next);
     });
     const GridPose p = g.pose(s);

@@ -4,10 +4,14 @@
 ///   Finding via Large Neighborhood Search." AAAI 2022.
 ///
 /// Every agent first gets a path by prioritized planning in which earlier agents' paths are soft
-/// obstacles (soft_path_search.h): the plan is complete but may collide. Then, until no two
-/// agents collide or the deadline passes, a few agents (a neighbourhood) lose their paths and are
-/// replanned one by one, in a seeded random order, around everybody else as soft obstacles; the
-/// new paths are kept when the number of colliding agent pairs does not grow. Neighbourhoods come
+/// obstacles (soft_path_search.h): the plan is complete but may collide. A subproblem of
+/// `parking_robots` or more starts instead with the robots that get home one at a time, pushing
+/// the robots that stand in their way into pockets (parking_plan.h); the robots left start from
+/// their shortest paths (on packed real maps no order of prioritized planning works, and soft
+/// repairs alone stall). Then, until no two agents collide or the deadline passes, a few agents
+/// (a neighbourhood) lose their paths and are replanned one by one, in a seeded random order,
+/// around everybody else as soft obstacles; the new paths are kept when the number of colliding
+/// agent pairs does not grow. Neighbourhoods come
 /// from the collision graph (a colliding agent and its partners, widened by a random walk), from
 /// the agents in the way of a colliding agent's ideal path, or at random among colliding agents,
 /// chosen adaptively by how much each has helped (adaptive LNS). When repairs stop lowering the
@@ -70,6 +74,14 @@ struct LaLnsOptions {
   /// With returning robots, the stage is cleared (stage_clearing.h) only for at most this many
   /// other robots (0: never): a large level seldom finds its plan alone in the time given.
   int stage_robots = 8;
+  /// First plan of a subproblem of at least `parking_robots` robots: the robots that get to
+  /// their targets one at a time, with the robots in their way pushed into pockets
+  /// (parking_plan.h), in at most this many expansions (0: never) and `parking_share` of the
+  /// time left; the others start from their shortest paths. Smaller subproblems start from the
+  /// soft first plan, whose robots drive together rather than one after the other.
+  int parking_robots = 8;
+  long long parking_expansions = 3'000'000;
+  double parking_share = 0.5;
   /// Before each repair, one local repair of a colliding agent (path_splice.h): a few steps of
   /// its path around one of its collisions replanned collision-free, the rest kept (delayed if
   /// need be).

@@ -26,6 +26,9 @@ struct PocketRepairOptions {
   /// Expansions of all the legs' safe interval searches together: a pocket that fails costs
   /// little where legs are short, and on long ways (mazes) the repair gives up early.
   long long max_expansions = 20'000;
+  /// The breadth-first search for pockets passes only through states clear of every agent's
+  /// final state in the table (so that pockets behind standing robots are not offered).
+  bool around_final_states = false;
 };
 
 /// Marks in `way` (a flag per map cell, sized to the map if empty) the cells agent a's footprint
@@ -33,12 +36,13 @@ struct PocketRepairOptions {
 void markWay(const SearchSpace& space, int a, const StatePath& path, std::vector<char>& way);
 
 /// Pockets for agent b, the nearest first (at most options.max_pockets): states reachable from
-/// its start (breadth-first over its graph's edges, at most options.max_states) from which it
-/// can reach its target, where its footprint covers no cell marked in `way` and meets no agent's
-/// final state in `table`, spread half its radius apart. A filter only: static sweeps of the
-/// edges are left to the searches that drive there.
+/// `from` (its start if kNoState; breadth-first over its graph's edges, at most
+/// options.max_states) from which it can reach its target, where its footprint covers no cell
+/// marked in `way` and meets no agent's final state in `table`, spread half its radius apart.
+/// A filter only: static sweeps of the edges are left to the searches that drive there.
 std::vector<StateId> pocketsOffWay(const SearchSpace& space, int b, const SoftPathTable& table,
-                                   const std::vector<char>& way, const PocketRepairOptions& options);
+                                   const std::vector<char>& way, const PocketRepairOptions& options,
+                                   StateId from = kNoState);
 
 /// Paths {through's, then each parker's} (none of these agents in `table`): the parkers drive
 /// to pockets off the way `through_way` (through's shortest path, ignoring other agents) and

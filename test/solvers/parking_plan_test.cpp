@@ -1,0 +1,103 @@
+// The plan made one robot at a time with the robots in its way pushed into pockets
+// (parking_plan.h), alone and as LA-LNS's first plan: every plan passes the validator.
+#include "fleet_planner/solvers/lns/parking_plan.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <optional>
+
+#include "fleet_planner/model/plan_validator.h"
+#include "fleet_planner/solvers/lns/la_lns.h"
+#include "fleet_planner/solvers/search/solve_common.h"
+#include "solver_test_util.h"
+#include "test_maps.h"
+
+namespace fleet_planner::test {
+namespace {
+
+std::vector<int> everyAgent(const SearchSpace& space) {
+  std::vector<int> order(space.numAgents());
+  for (int a = 0; a < space.numAgents(); ++a) order[a] = a;
+  return order;
+}
+
+// The parking plan of every agent of `space`, in index order; `expansions` gets its count.
+std::optional<ParkingPlan> planAll(const SearchSpace& space, long long& expansions) {
+  expansions = 0;
+  return parkingPlan(space, everyAgent(space), Deadline::in(5.0), ParkingPlanOptions{}, expansions);
+}
+
+bool visits(const Path& path, const GridPose& cell) {
+  return std::any_of(path.begin(), path.end(),
+                     [&](const GridPose& p) { return p.x == cell.x && p.y == cell.y; });
+}
+
+// A corridor 14 cells long with a pocket one cell deep below x = 6: "a" drives the corridor
+// east; "b" stands at its target in the middle of it. "a" gets past only if b backs into the
+// pocket and comes back.
+World corridorWorld() {
+  return World(mapFromRows({"..............", "@@@@@@.@@@@@@@"}),
+               {dot("a", {0, 0, 0}, {13, 0, 0}), dot("b", {9, 0, 0}, {9, 0, 0})});
+}
+
+TEST(ParkingPlan, PushesTheRobotStandingOnTheWayIntoAPocketAndBringsItBack) {
+  const World w = corridorWorld();
+  const Subproblem sub = allRobots(w);
+  const SearchSpace space(sub);
+  long long expansions = 0;
+  const auto plan = planAll(space, expansions);
+  ASSERT_TRUE(plan.has_value());
+  EXPECT_EQ(plan->robots_home, 2);
+  EXPECT_GT(expansions, 0);
+  const ValidationResult v = validateStatePaths(w, sub, space, plan->paths);
+  EXPECT_TRUE(v.valid()) << violationName(v.violation.kind);
+  const std::vector<Path> paths = toPosePaths(space, plan->paths);
+  EXPECT_TRUE(visits(paths[1], {6, 1, 0})) << "b never parked in the pocket";
+  EXPECT_EQ(paths[1].back(), (GridPose{9, 0, 0}));
+  // Same input, same plan.
+  const auto again = planAll(space, expansions);
+  ASSERT_TRUE(again.has_value());
+  EXPECT_EQ(again->paths, plan->paths);
+}
+
+TEST(ParkingPlan, GivesUpARobotWithNoWayAndKeepsTheOthersPlan) {
+  // Two robots trading the ends of a corridor without a pocket: neither gets past the other.
+  // "c" has its own way in the row above, which the other two never need.
+  const World w(mapFromRows({"..............", "@@@@@@@@@@@@@@", ".............."}),
+                {dot("a", {0, 0, 0}, {13, 0, 0}), dot("b", {13, 0, 2}, {0, 0, 2}),
+                 dot("c", {0, 2, 0}, {13, 2, 0})});
+  const Subproblem sub = allRobots(w);
+  const SearchSpace space(sub);
+  long long expansions = 0;
+  const auto plan = planAll(space, expansions);
+  ASSERT_TRUE(plan.has_value());
+  EXPECT_TRUE(plan->home[2]);
+  EXPECT_FALSE(plan->home[0] || plan->home[1]) << "each stands on the other's target";
+  EXPECT_EQ(plan->robots_home, 1);
+  EXPECT_FALSE(firstConflict(space, plan->paths).has_value());
+  for (int a = 0; a < space.numAgents(); ++a) EXPECT_EQ(plan->paths[a].front(), space.start(a));
+}
+
+TEST(ParkingPlan, IsLaLnsFirstPlan) {
+  const World w = corridorWorld();
+  Subproblem sub = allRobots(w);
+  const SearchSpace space(sub);
+  long long expansions = 0;
+  const auto plan = planAll(space, expansions);
+  ASSERT_TRUE(plan.has_value());
+  // A budget that the plan fits in, and LA-LNS's soft first plan and repairs do not (about 700
+  // expansions here).
+  ASSERT_LT(expansions, 100);
+  sub.max_expansions = 100;
+  LaLnsOptions options;
+  options.parking_robots = 2;
+  LaLns lns(options);
+  const Outcome solved = solveWith(lns, w, sub);
+  ASSERT_TRUE(solvedValidly(solved)) << describe(solved);
+  EXPECT_EQ(solved.result.paths, toPosePaths(space, plan->paths))
+      << "every robot got home: its plan is the answer";
+}
+
+}  // namespace
+}  // namespace fleet_planner::test
