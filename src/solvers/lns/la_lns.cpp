@@ -49,8 +49,7 @@ SolveResult LnsSearch::run() {
     return space_.distance(x, space_.start(x)) > space_.distance(y, space_.start(y));
   });
   std::vector<char> parked(n_, 0);
-  const bool tried_parking = options_.parking_expansions > 0 && n_ >= options_.parking_robots;
-  if (tried_parking) {
+  if (options_.parking_expansions > 0 && n_ >= options_.parking_robots) {
     if (std::optional<SolveResult> done = parkFirst(order, parked)) return *done;
   }
   for (int a : order) {
@@ -59,7 +58,7 @@ SolveResult LnsSearch::run() {
     // A robot the parking plan left has no collision-free path: it starts from its shortest
     // one, and the repairs take it from there (a soft search around the parking plan's long
     // paths costs much of the time the repairs need).
-    if (tried_parking) path = idealPath(a);
+    if (parked_partly_) path = shortestAlone(a);
     if (path.empty()) {
       if (std::optional<SolveResult> stop = initialPath(a, path)) return *stop;
     }
@@ -100,6 +99,14 @@ std::optional<SolveResult> LnsSearch::parkFirst(const std::vector<int>& order, s
   const std::optional<ParkingPlan> plan = parkingPlan(space_, order, deadline, o, stats_.low_level_expansions);
   if (!plan) return std::nullopt;
   if (plan->robots_home == n_) return success(plan->paths);
+  // A subproblem of fewer than twice `parking_robots` robots that the parking plan leaves
+  // unfinished starts from the soft first plan of all its robots instead: the soft repairs
+  // converge there, and robots that wait in pockets make long paths to repair around.
+  if (n_ < 2 * options_.parking_robots) {
+    parked_partly_ = false;
+    return std::nullopt;
+  }
+  parked_partly_ = true;
   for (int a = 0; a < n_; ++a) {
     if (!plan->home[a]) continue;
     table_.insert(a, plan->paths[a]);
@@ -107,6 +114,21 @@ std::optional<SolveResult> LnsSearch::parkFirst(const std::vector<int>& order, s
     ++planned_;
   }
   return std::nullopt;
+}
+
+// Agent a's shortest path around the hard obstacles only (static footprints, other
+// subproblems' timed paths), by safe intervals: a wait for another subproblem's robot to pass
+// is one node, where space-time A* (idealPath) pays for it step by step. Cached as its ideal
+// path; empty if none within the search's budget.
+StatePath LnsSearch::shortestAlone(int a) {
+  if (ideal_[a].empty() && !ideal_absent_[a]) {
+    const SoftPathTable nobody(space_);
+    const SafeIntervalResult r =
+        safeIntervalSearch(space_, a, nobody, problem_.deadline, options_.max_expansions_per_search);
+    stats_.low_level_expansions += r.expansions;
+    if (r.outcome == SafeIntervalResult::Outcome::Found) ideal_[a] = r.path;
+  }
+  return ideal_[a];
 }
 
 // With returning robots (robots of other subproblems stepping aside): a plan of the others

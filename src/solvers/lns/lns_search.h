@@ -60,6 +60,7 @@ class LnsSearch {
 
   // Shortest path of a around hard obstacles only (empty if none or out of time); cached.
   const StatePath& idealPath(int a);
+  StatePath shortestAlone(int a);
 
   int collidingPairs() const;
 
@@ -130,6 +131,7 @@ class LnsSearch {
   Rng rng_;
   std::vector<std::vector<int>> partners_;  // sorted; symmetric: the collision graph
   std::vector<StatePath> ideal_;
+  bool parked_partly_ = false;  // the first plan began with a parking plan that left robots
   std::vector<bool> ideal_absent_;  // the search proved there is no such path
   std::vector<int> escalation_;     // per agent: factor of the collision cost
   int planned_ = 0;                 // robots with a path in the first plan so far
