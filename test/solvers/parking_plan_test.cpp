@@ -79,6 +79,34 @@ TEST(ParkingPlan, GivesUpARobotWithNoWayAndKeepsTheOthersPlan) {
   for (int a = 0; a < space.numAgents(); ++a) EXPECT_EQ(plan->paths[a].front(), space.start(a));
 }
 
+// A robot of another subproblem ("p") drives up from below into the door of a small room off
+// the corridor and parks there for good. "b", pushed off a's way, must not take a pocket in the
+// room: after p has closed the door it could never get home. It takes the pocket at x = 3.
+TEST(ParkingPlan, TakesNoPocketThatARobotParkedForGoodCutsOffFromHome) {
+  const World w(mapFromRows({"..............", "@@@.@@@@@.@@@@", "@@@@@@@@...@@@", "@@@@@@@@@.@@@@"}),
+                {dot("a", {0, 0, 0}, {13, 0, 0}), dot("b", {9, 0, 0}, {9, 0, 0}),
+                 dot("p", {9, 3, 3}, {9, 1, 3})});
+  Subproblem sub = allRobots(w);
+  sub.robots = {0, 1};
+  MovingObstacle p;
+  p.robot = 2;
+  p.path.assign(9, GridPose{9, 3, 3});
+  p.path.push_back({9, 2, 3});
+  p.path.push_back({9, 1, 3});
+  sub.moving.push_back(p);
+  const SearchSpace space(sub);
+  long long expansions = 0;
+  const auto plan = planAll(space, expansions);
+  ASSERT_TRUE(plan.has_value());
+  EXPECT_EQ(plan->robots_home, 2) << "b was trapped in the room";
+  const std::vector<Path> paths = toPosePaths(space, plan->paths);
+  EXPECT_TRUE(visits(paths[1], {3, 1, 0})) << "b did not wait in the pocket at x = 3";
+  Plan all;
+  all.paths = {paths[0], paths[1], p.path};
+  const ValidationResult v = validatePlan(w.map, w.instance, all);
+  EXPECT_TRUE(v.valid()) << v.violation.message;
+}
+
 TEST(ParkingPlan, IsLaLnsFirstPlan) {
   const World w = corridorWorld();
   Subproblem sub = allRobots(w);

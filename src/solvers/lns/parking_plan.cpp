@@ -24,7 +24,8 @@ class Parking {
         n_(space.numAgents()),
         table_(space),
         paths_(n_),
-        queued_(n_, 0) {
+        queued_(n_, 0),
+        reaches_home_(n_) {
     for (int a = 0; a < n_; ++a) {
       paths_[a] = {space.start(a)};
       table_.insert(a, paths_[a]);
@@ -47,7 +48,8 @@ class Parking {
       // robots on it drive into pockets off it first.
       int blocked_steps = 0;
       const StatePath through = cheapestWay(
-          a, [&](StateId s) { return s == space_.target(a); }, nullptr, &blocked_steps);
+          a, paths_[a].back(), [&](StateId s) { return s == space_.target(a); }, true, nullptr,
+          &blocked_steps);
       if (blocked_steps == 0 && driveTo(a, space_.target(a))) continue;
       // Given up: it stays where it stands (others may still push it).
       if (++failed[a] > options_.max_failed_turns || through.empty()) continue;
@@ -86,10 +88,7 @@ class Parking {
 
   // Agent b's footprint where its path ends meets a cell of `way`.
   bool standsOn(int b, const std::vector<char>& way) const {
-    const StateGraph& g = space_.graph(b);
-    const GridPose p = g.pose(paths_[b].back());
-    return !forEachMapCell(space_.cells(b).body(p.heading), {p.x, p.y}, g.width(), g.height(),
-                           [&](std::size_t cell) { return way[cell] == 0; });
+    return !clearOfWay(space_, b, paths_[b].back(), way);
   }
 
   // Agent a doing `action` from s meets a robot of another subproblem that has parked for good.
@@ -112,20 +111,21 @@ class Parking {
     return met_.empty() ? 0 : 1;
   }
 
-  // Agent a's way from where its path ends to the first state `goal` accepts, among the static
-  // obstacles, cheapest when a state among standing robots costs options.crowd_cost steps
-  // more (Dijkstra; with a's distances as the heuristic when the goal is its target).
-  StatePath cheapestWay(int a, const std::function<bool(StateId)>& goal,
-                        const std::vector<char>* busy = nullptr,
-                        int* blocked_steps = nullptr) const {
+  // Agent a's way from `from` to the first state `goal` accepts, among the static obstacles
+  // and the robots of other subproblems parked for good. With `crowds`, cheapest when a state
+  // among robots standing where their paths end costs options.crowd_cost steps more (moves
+  // through a robot marked in `busy` are barred). A* with a's distances as the heuristic when
+  // `to_target` (the goal is its target), else Dijkstra: for other goals the distance to the
+  // target is no lower bound. Empty if no way within options.max_way_states.
+  StatePath cheapestWay(int a, StateId from, const std::function<bool(StateId)>& goal,
+                        bool to_target, const std::vector<char>* busy = nullptr,
+                        int* blocked_steps = nullptr, bool crowds = true) const {
     const StateGraph& g = space_.graph(a);
-    const StateId from = paths_[a].back();
-    const bool home = goal(space_.target(a));
     std::vector<int> cost(static_cast<std::size_t>(g.stateIdCount()), -1);
     std::vector<StateId> parent(cost.size(), kNoState);
     using Entry = std::pair<long long, StateId>;  // (f, state)
     std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> open;
-    auto h = [&](StateId s) { return home ? space_.distance(a, s) : 0; };
+    auto h = [&](StateId s) { return to_target ? space_.distance(a, s) : 0; };
     cost[from] = 0;
     open.push({h(from), from});
     long long popped = 0;
@@ -144,7 +144,7 @@ class Parking {
       g.forEachSuccessor(s, [&](Action act, StateId next) {
         if (space_.distance(a, next) < 0 || !space_.allows(a, s, act) || parkedForGood(a, s, act))
           return;
-        const int crowd = crowded(a, s, act, busy);
+        const int crowd = crowds ? crowded(a, s, act, busy) : 0;
         if (crowd == 2) return;  // through a robot that is not to be pushed
         const int c = cost[s] + 1 + (crowd ? options_.crowd_cost : 0);
         if (cost[next] >= 0 && cost[next] <= c) return;
@@ -154,6 +154,23 @@ class Parking {
       });
     }
     return {};
+  }
+
+  // Agent b can drive from s to its target around the robots of other subproblems parked for
+  // good (its distances account for the static obstacles only: without reversing, a pocket
+  // facing a parked robot with no room to turn is a trap). Cached per state.
+  bool reachesHome(int b, StateId s) {
+    if (space_.reservations().empty()) return true;
+    std::vector<char>& known = reaches_home_[b];  // 0 unknown, 1 yes, 2 no
+    if (known.empty()) known.assign(static_cast<std::size_t>(space_.graph(b).stateIdCount()), 0);
+    if (known[s] == 0) {
+      const StatePath home = cheapestWay(
+          b, s, [&](StateId q) { return q == space_.target(b) || known[q] == 1; }, true, nullptr,
+          nullptr, false);
+      if (home.empty()) known[s] = 2;
+      for (StateId q : home) known[q] = 1;
+    }
+    return known[s] == 1;
   }
 
   // The robots standing on `way` (and not busy) drive into pockets off it; a robot with no
@@ -167,7 +184,8 @@ class Parking {
       if (!parked && depth > 0) {
         busy[b] = 1;
         const StatePath route = cheapestWay(
-            b, [&](StateId s) { return offWay(b, s, way); }, &busy);
+            b, paths_[b].back(), [&](StateId s) { return offWay(b, s, way) && reachesHome(b, s); },
+            false, &busy);
         busy[b] = 0;
         if (route.size() < 2) continue;
         std::vector<char> wider = way;
@@ -186,11 +204,7 @@ class Parking {
 
   // b may park at s for good: off the way, clear of every final state.
   bool offWay(int b, StateId s, const std::vector<char>& way) const {
-    const StateGraph& g = space_.graph(b);
-    const GridPose p = g.pose(s);
-    const bool clear = forEachMapCell(space_.cells(b).body(p.heading), {p.x, p.y}, g.width(),
-                                      g.height(), [&](std::size_t cell) { return way[cell] == 0; });
-    return clear && !crowded(b, s);
+    return clearOfWay(space_, b, s, way) && !crowded(b, s);
   }
 
   // Agent b drives from where its path ends to the first of its pockets off `way` it reaches.
@@ -201,7 +215,7 @@ class Parking {
     table_.insert(b, paths_[b]);
     for (StateId pocket : pockets) {
       if (outOfBudget()) return false;
-      if (driveTo(b, pocket)) return true;
+      if (reachesHome(b, pocket) && driveTo(b, pocket)) return true;
     }
     return false;
   }
@@ -274,6 +288,7 @@ class Parking {
   std::vector<StatePath> paths_;
   std::deque<int> queue_;
   std::vector<char> queued_;
+  std::vector<std::vector<char>> reaches_home_;
   PocketRepairOptions pocket_options_;
   long long spent_ = 0;
   mutable std::vector<int> met_;

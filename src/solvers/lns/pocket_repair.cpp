@@ -45,15 +45,20 @@ std::vector<StateId> pocketsOffWay(const SearchSpace& space, int b, const SoftPa
       return std::max(std::abs(o.x - p.x), std::abs(o.y - p.y)) >= spacing;
     });
     if (!apart || space.distance(b, s) < 0) continue;
-    const bool clear = forEachMapCell(space.cells(b).body(p.heading), {p.x, p.y}, g.width(), g.height(),
-                                      [&](std::size_t cell) { return way[cell] == 0; });
-    if (!clear) continue;
+    if (!clearOfWay(space, b, s, way)) continue;
     met.clear();
     table.collisionsHolding(b, s, settled, met);
     if (!met.empty()) continue;
     pockets.push_back(s);
   }
   return pockets;
+}
+
+bool clearOfWay(const SearchSpace& space, int b, StateId s, const std::vector<char>& way) {
+  const StateGraph& g = space.graph(b);
+  const GridPose p = g.pose(s);
+  return forEachMapCell(space.cells(b).body(p.heading), {p.x, p.y}, g.width(), g.height(),
+                        [&](std::size_t cell) { return way[cell] == 0; });
 }
 
 void markWay(const SearchSpace& space, int a, const StatePath& path, std::vector<char>& way) {

@@ -35,6 +35,9 @@ struct PocketRepairOptions {
 /// covers along `path`: at each state and on the move to the next.
 void markWay(const SearchSpace& space, int a, const StatePath& path, std::vector<char>& way);
 
+/// Agent b's footprint at state s covers no cell marked in `way` (sized to the map).
+bool clearOfWay(const SearchSpace& space, int b, StateId s, const std::vector<char>& way);
+
 /// Pockets for agent b, the nearest first (at most options.max_pockets): states reachable from
 /// `from` (its start if kNoState; breadth-first over its graph's edges, at most
 /// options.max_states) from which it can reach its target, where its footprint covers no cell
