@@ -116,7 +116,7 @@ LayeredResult planLayered(const GridMap& map, const Instance& instance, const Fl
   const Deadline polish =
       deadline.within(deadline.remaining() - std::min(budget.validation_reserve_s, 0.5 * deadline.remaining()));
   if (options.refine) result.refinement = refinePlan(instance, graphs, paths, polish);
-  if (options.compress) result.compression = compressPlan(graphs, paths, polish);
+  if (options.compress) result.compression = compressPlan(instance, graphs, paths, polish);
   result.plan.paths = std::move(paths);
 
   const ActionModel model = n > 0 ? graphs.graph(0).actionModel() : ActionModel{};

@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <chrono>
 
+#include "fleet_planner/execution/earliest_schedule.h"
+
 #include "path_steps.h"
 
 namespace fleet_planner {
@@ -92,9 +94,17 @@ class Compressor {
 
 }  // namespace
 
-CompressionStats compressPlan(const FleetGraphs& graphs, std::vector<Path>& paths, const Deadline& deadline) {
+CompressionStats compressPlan(const Instance& instance, const FleetGraphs& graphs, std::vector<Path>& paths,
+                              const Deadline& deadline) {
   const auto start = std::chrono::steady_clock::now();
   CompressionStats stats;
+  if (!paths.empty()) {
+    Plan plan;
+    plan.paths = std::move(paths);
+    stats.waits_removed = retimeToEarliest(instance, plan, graphs.graph(0).actionModel());
+    paths = std::move(plan.paths);
+  }
+  // Then one robot at a time, which may also drop a wait by letting two steps swap their order.
   Compressor compressor(graphs, paths);
   while (!deadline.expired()) {
     ++stats.passes;

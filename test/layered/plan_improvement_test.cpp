@@ -62,7 +62,7 @@ TEST(PlanCompression, DropsUselessWaitsAndKeepsNeededOnes) {
   ASSERT_TRUE(validatePlan(map, in, plan).valid());
   const FleetGraphs graphs(map, footprintsOf(in));
 
-  const CompressionStats stats = compressPlan(graphs, plan.paths, Deadline::in(5));
+  const CompressionStats stats = compressPlan(in, graphs, plan.paths, Deadline::in(5));
   const ValidationResult check = validatePlan(map, in, plan);
   EXPECT_TRUE(check.valid()) << check.violation.message;
   EXPECT_EQ(stats.waits_removed, 3);
