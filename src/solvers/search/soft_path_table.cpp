@@ -7,19 +7,10 @@
 
 namespace fleet_planner {
 
-namespace {
-
-constexpr int kBucketCells = 4;  // a bucket is 4 x 4 cells: a large robot's sweep spans a few
-
-}  // namespace
-
 SoftPathTable::SoftPathTable(const SearchSpace& space)
     : space_(space),
       width_(space.numAgents() > 0 ? space.graph(0).width() : 1),
       height_(space.numAgents() > 0 ? space.graph(0).height() : 1),
-      bx_((width_ + kBucketCells - 1) / kBucketCells),
-      by_((height_ + kBucketCells - 1) / kBucketCells),
-      buckets_(bx_ * by_),
       paths_(space.numAgents()),
       agent_runs_(space.numAgents()),
       stamp_(space.numAgents(), 0) {}
@@ -34,40 +25,22 @@ std::uint64_t SoftPathTable::blocksOf(int first, int last) {
   return upto & ~((std::uint64_t{1} << b0) - 1);
 }
 
-SoftPathTable::Bucket SoftPathTable::bucketsOf(const CellSet& set, Cell origin) const {
-  auto clampX = [&](int x) { return std::clamp(x, 0, width_ - 1) / kBucketCells; };
-  auto clampY = [&](int y) { return std::clamp(y, 0, height_ - 1) / kBucketCells; };
-  return {clampX(origin.x + set.minX()), clampY(origin.y + set.minY()),
-          clampX(origin.x + set.maxX()), clampY(origin.y + set.maxY())};
-}
-
-template <class F>
-void SoftPathTable::forBuckets(const CellSet& set, Cell origin, F&& f) const {
-  if (set.empty()) return;
-  const Bucket b = bucketsOf(set, origin);
-  for (int y = b.y0; y <= b.y1; ++y) {
-    for (int x = b.x0; x <= b.x1; ++x) f(y * bx_ + x);
-  }
-}
-
 void SoftPathTable::index(int a, bool on) {
   const StatePath& path = paths_[a];
   const StateGraph& g = space_.graph(a);
-  auto edit = [&](std::vector<int>& agents) {
-    if (on) {
-      agents.push_back(a);
-    } else {
-      agents.erase(std::find(agents.begin(), agents.end(), a));
-    }
-  };
-  // The steps during which a sweeps a cell, one span per stretch of consecutive steps.
-  std::vector<int> touched;  // cells whose spans name a (removal)
+  // The steps during which a sweeps a cell, one span per stretch of consecutive steps. Removal
+  // collects the cells whose spans name a (each once) and clears them afterwards.
+  std::vector<int> touched;
+  newQuery();
   auto span = [&](int cell, int t, int last) {
-    std::vector<Span>& spans = cell_spans_[cell];
     if (!on) {
-      touched.push_back(cell);
+      if (cell_stamp_[cell] != query_) {
+        cell_stamp_[cell] = query_;
+        touched.push_back(cell);
+      }
       return;
     }
+    std::vector<Span>& spans = cell_spans_[cell];
     if (!spans.empty() && spans.back().agent == a && spans.back().last == t - 1) {
       spans.back().last = last;
     } else {
@@ -75,28 +48,22 @@ void SoftPathTable::index(int a, bool on) {
     }
     cell_blocks_[cell] |= blocksOf(t, last);
   };
-  for (int t = 0; t + 1 < static_cast<int>(path.size()); ++t) {
+  const int steps = static_cast<int>(path.size()) - 1;
+  for (int t = 0; t < steps;) {
     const GridPose p = g.pose(path[t]);
     const Action act = stepAction(g, path[t], path[t + 1]);
+    // A run of waits covers the body over all its steps: one span per cell.
+    int last = t;
+    if (act == Action::Wait) {
+      while (last + 1 < steps && path[last + 2] == path[t]) ++last;
+    }
     const CellSet& swept = space_.cells(a).swept(p.heading, act);
-    forBuckets(swept, {p.x, p.y}, [&](int bucket) {
-      std::vector<Motion>& motions = moving_[key(t, bucket)];
-      if (on) {
-        motions.push_back({a, p, act});
-      } else {
-        motions.erase(std::find_if(motions.begin(), motions.end(), [a](const Motion& m) { return m.agent == a; }));
-      }
-      if (motions.empty()) moving_.erase(key(t, bucket));
-    });
-    forEachMapCell(swept, {p.x, p.y}, width_, height_, [&](int cell) { span(cell, t, t); });
+    forEachMapCell(swept, {p.x, p.y}, width_, height_, [&](int cell) { span(cell, t, last); });
+    t = last + 1;
   }
   const GridPose end = g.pose(path.back());
   const CellSet& body = space_.cells(a).body(end.heading);
-  forBuckets(body, {end.x, end.y}, [&](int bucket) { edit(parked_[bucket]); });
-  const int parked_from = static_cast<int>(path.size()) - 1;
-  forEachMapCell(body, {end.x, end.y}, width_, height_, [&](int cell) { span(cell, parked_from, kNever); });
-  std::sort(touched.begin(), touched.end());
-  touched.erase(std::unique(touched.begin(), touched.end()), touched.end());
+  forEachMapCell(body, {end.x, end.y}, width_, height_, [&](int cell) { span(cell, steps, kNever); });
   for (int cell : touched) {
     std::vector<Span>& spans = cell_spans_[cell];
     spans.erase(std::remove_if(spans.begin(), spans.end(), [a](const Span& r) { return r.agent == a; }),
@@ -109,9 +76,9 @@ void SoftPathTable::index(int a, bool on) {
 
 void SoftPathTable::insert(int a, const StatePath& path) {
   if (cell_spans_.empty()) {
-    parked_.resize(buckets_);
     cell_spans_.resize(static_cast<std::size_t>(width_) * height_);
     cell_blocks_.assign(cell_spans_.size(), 0);
+    cell_stamp_.assign(cell_spans_.size(), 0);
   }
   paths_[a] = path;
   index(a, true);
@@ -128,20 +95,10 @@ int SoftPathTable::lastMove() const {
   return last;
 }
 
-bool SoftPathTable::meets(int a, const GridPose& p, Action action, int b, const GridPose& q,
-                          Action b_action) const {
-  return sweepsOverlap(space_.cells(a), p, action, space_.cells(b), q, b_action);
-}
-
-bool SoftPathTable::hits(int a, const GridPose& p, Action action, int b, int t) const {
-  const StateGraph& g = space_.graph(b);
-  const StateId s = stateAt(paths_[b], t), n = stateAt(paths_[b], t + 1);
-  return meets(a, p, action, b, g.pose(s), stepAction(g, s, n));
-}
-
 void SoftPathTable::newQuery() const {
   if (++query_ == 0) {  // wrapped: forget every stamp
     std::fill(stamp_.begin(), stamp_.end(), 0);
+    std::fill(cell_stamp_.begin(), cell_stamp_.end(), 0);
     query_ = 1;
   }
 }
@@ -174,25 +131,11 @@ void SoftPathTable::collisionsHolding(int a, StateId s, int t, std::vector<int>&
   newQuery();
   stamp_[a] = query_;
   const GridPose p = space_.graph(a).pose(s);
-  const CellSet& body = space_.cells(a).body(p.heading);
-  const int last = lastMove();
-  forBuckets(body, {p.x, p.y}, [&](int bucket) {
-    // Here an agent is marked only once met: one that misses standing at its end may still
-    // meet a while it moves, at another step.
-    auto met = [&](int b) {
-      stamp_[b] = query_;
-      out.push_back(b);
-    };
-    for (int b : parked_[bucket]) {
-      const int end = static_cast<int>(paths_[b].size());
-      if (stamp_[b] != query_ && hits(a, p, Action::Wait, b, end)) met(b);
-    }
-    for (int step = t; step <= last; ++step) {
-      const auto it = moving_.find(key(step, bucket));
-      if (it == moving_.end()) continue;
-      for (const Motion& m : it->second) {
-        if (stamp_[m.agent] != query_ && meets(a, p, Action::Wait, m.agent, m.pose, m.action)) met(m.agent);
-      }
+  // An agent that sweeps a cell of a's body during some step t or later (a span that ends at t
+  // or later) covers a cell of the body's probe then.
+  forEachMapCell(space_.probe(a, p.heading, Action::Wait), {p.x, p.y}, width_, height_, [&](int cell) {
+    for (const Span& r : cell_spans_[cell]) {
+      if (r.last >= t && firstVisit(r.agent)) out.push_back(r.agent);
     }
   });
 }

@@ -1,8 +1,8 @@
 #pragma once
 /// The current paths of a subproblem's agents as soft obstacles (LA-LNS, la_lns.h): which
 /// agents a candidate motion would collide with, found through the steps each cell is swept
-/// (read at the cells of the motion's contact probe, SearchSpace::probe) and, for holding a
-/// state, a space-time index of buckets of cells: a query costs the agents nearby, not the fleet.
+/// (read at the cells of the motion's contact probe, SearchSpace::probe): a query costs the
+/// agents that pass nearby, not the fleet.
 ///
 /// Step t is the motion from time t to t + 1; an agent sweeps the cells of its action during a
 /// step (its footprint when it waits) and, once its path has ended, stands at its last state
@@ -10,7 +10,6 @@
 /// covers the vertex conflicts at t and t + 1 and the transfer conflicts of the step, the model
 /// of agent_conflicts.h and of the validator.
 #include <cstdint>
-#include <unordered_map>
 #include <vector>
 
 #include "fleet_planner/solvers/search/agent_conflicts.h"
@@ -52,39 +51,19 @@ class SoftPathTable {
   int lastMove() const;
 
  private:
-  struct Bucket {
-    int x0, y0, x1, y1;
-  };
-  Bucket bucketsOf(const CellSet& set, Cell origin) const;
-  std::uint64_t key(int t, int bucket) const {
-    return static_cast<std::uint64_t>(t) * buckets_ + bucket;
-  }
-  template <class F>
-  void forBuckets(const CellSet& set, Cell origin, F&& f) const;
   // Adds (on = true) or removes the entries of a's path.
   void index(int a, bool on);
-  // a doing `action` from pose p collides with b doing `b_action` from pose q in the same step.
-  bool meets(int a, const GridPose& p, Action action, int b, const GridPose& q, Action b_action) const;
-  // a doing `action` from pose p during step t collides with b's motion during that step.
-  bool hits(int a, const GridPose& p, Action action, int b, int t) const;
   // Starts a query: a new query_ stamp (all stamps cleared when the counter wraps).
   void newQuery() const;
   // True the first time agent b is met in the current query (query_).
   bool firstVisit(int b) const;
 
   const SearchSpace& space_;
-  int width_, height_, bx_, by_, buckets_;
+  int width_, height_;
   std::vector<StatePath> paths_;
-  struct Motion {
-    int agent;
-    GridPose pose;  // where the agent is at the step's start
-    Action action;  // what it does during the step
-  };
-  std::unordered_map<std::uint64_t, std::vector<Motion>> moving_;  // (step, bucket) -> motions
-  std::vector<std::vector<int>> parked_;                        // bucket -> agents at their end
   // Per map cell, the steps during which an agent sweeps it (waits and moves alike), one span
   // per stretch of consecutive steps; last == kNever: the agent stands there at its end. The
-  // interval queries (unsafeRuns) read these: the cells of a motion, not every motion nearby.
+  // queries read these: the cells of a motion, not every motion nearby.
   struct Span {
     int first, last;
     int agent;
@@ -100,7 +79,8 @@ class SoftPathTable {
   std::vector<std::uint64_t> cell_blocks_;
   mutable std::vector<std::vector<std::pair<int, int>>> agent_runs_;  // unsafeRuns' scratch
   mutable std::vector<int> met_;                                     // its agents
-  mutable std::vector<std::uint32_t> stamp_;  // dedup of query results
+  mutable std::vector<std::uint32_t> stamp_;       // dedup of query results, per agent
+  mutable std::vector<std::uint32_t> cell_stamp_;  // and per cell (removal)
   mutable std::uint32_t query_ = 0;
 };
 
