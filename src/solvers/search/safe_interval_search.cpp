@@ -41,8 +41,13 @@ class Sipp {
     const std::uint64_t k = static_cast<std::uint64_t>(s) * kActions + static_cast<int>(action);
     auto it = unsafe_.find(k);
     if (it != unsafe_.end()) return it->second;
-    int forever = kNever;
-    others_.unsafeRuns(a_, s, action, runs_, forever);
+    int forever = kNever, lo = kNever, hi = -1;
+    if (others_.lastMove() < kSteps) {
+      runs_.clear();
+      others_.markUnsafe(a_, s, action, steps_.data(), lo, hi, forever);
+    } else {
+      others_.unsafeRuns(a_, s, action, runs_, forever);
+    }
     if (forever != kNever) runs_.emplace_back(forever, kNever);
     const ReservationTable& reservations = space_.reservations();
     if (!reservations.empty()) {
@@ -54,7 +59,7 @@ class Sipp {
       }
     }
     Unsafe u;
-    unionOf(runs_, u.runs);
+    unionOf(runs_, u.runs, lo, hi);
     return unsafe_.emplace(k, std::move(u)).first->second;
   }
 
@@ -77,9 +82,19 @@ class Sipp {
   // non-adjacent runs. A motion's runs number about a hundred, most of them repeats from
   // neighbouring cells: when they all end within the first kSteps steps their steps are set in
   // a bitset and read back in order, else they are sorted and merged.
-  void unionOf(std::vector<std::pair<int, int>>& runs, std::vector<std::pair<int, int>>& out) {
+  // Steps lo..hi of the bitset may be set already (markUnsafe): they join the union.
+  void unionOf(std::vector<std::pair<int, int>>& runs, std::vector<std::pair<int, int>>& out, int lo, int hi) {
     out.clear();
-    int forever = kNever, lo = kNever, hi = -1;
+    int forever = kNever;
+    if (hi >= 0) {
+      bool beyond = false;
+      for (const auto& r : runs) beyond = beyond || (r.second != kNever && r.second >= kSteps);
+      if (beyond) {  // the sort below: the marked steps become runs first
+        bitsToRuns(lo, hi, runs);
+        lo = kNever;
+        hi = -1;
+      }
+    }
     for (const auto& [first, last] : runs) {
       if (last == kNever) {
         forever = std::min(forever, first);
@@ -101,32 +116,9 @@ class Sipp {
     }
     if (hi >= 0) {
       for (const auto& [first, last] : runs) {
-        if (last == kNever) continue;
-        for (int t = first; t <= last;) {  // whole words at once where the run covers them
-          const int word = t >> 6, bit = t & 63;
-          const int n = std::min(64 - bit, last - t + 1);
-          steps_[word] |= (n == 64 ? ~0ULL : ((1ULL << n) - 1) << bit);
-          t += n;
-        }
+        if (last != kNever) SoftPathTable::markSteps(steps_.data(), first, last);
       }
-      // The first set (or clear) step at or after `from`; past hi's word if none.
-      auto scan = [&](int from, bool set) {
-        for (int word = from >> 6; word <= (hi >> 6); ++word) {
-          std::uint64_t bits = set ? steps_[word] : ~steps_[word];
-          if (word == (from >> 6)) bits &= ~0ULL << (from & 63);
-          if (bits != 0) return (word << 6) + __builtin_ctzll(bits);
-        }
-        return ((hi >> 6) + 1) << 6;
-      };
-      int t = lo;
-      while (t <= hi) {
-        const int first = scan(t, true);
-        if (first > hi) break;
-        const int last = scan(first, false) - 1;
-        out.emplace_back(first, last);
-        t = last + 1;
-      }
-      std::fill(steps_.begin() + (lo >> 6), steps_.begin() + (hi >> 6) + 1, 0ULL);
+      bitsToRuns(lo, hi, out);
     }
     if (forever == kNever) return;
     // The runs from `forever` on are covered; one that reaches it joins the last run.
@@ -136,6 +128,28 @@ class Sipp {
     } else {
       out.emplace_back(forever, kNever);
     }
+  }
+
+  // Appends the runs of set steps in lo..hi of the bitset, in order, and clears it.
+  void bitsToRuns(int lo, int hi, std::vector<std::pair<int, int>>& out) {
+    // The first set (or clear) step at or after `from`; past hi's word if none.
+    auto scan = [&](int from, bool set) {
+      for (int word = from >> 6; word <= (hi >> 6); ++word) {
+        std::uint64_t bits = set ? steps_[word] : ~steps_[word];
+        if (word == (from >> 6)) bits &= ~0ULL << (from & 63);
+        if (bits != 0) return (word << 6) + __builtin_ctzll(bits);
+      }
+      return ((hi >> 6) + 1) << 6;
+    };
+    int t = lo;
+    while (t <= hi) {
+      const int first = scan(t, true);
+      if (first > hi) break;
+      const int last = scan(first, false) - 1;
+      out.emplace_back(first, last);
+      t = last + 1;
+    }
+    std::fill(steps_.begin() + (lo >> 6), steps_.begin() + (hi >> 6) + 1, 0ULL);
   }
 
   // Earliest departure step in [lo, hi] at which `u` allows the move (-1 if none).

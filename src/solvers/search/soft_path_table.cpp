@@ -82,17 +82,17 @@ void SoftPathTable::insert(int a, const StatePath& path) {
   }
   paths_[a] = path;
   index(a, true);
+  last_move_ = std::max(last_move_, static_cast<int>(path.size()) - 2);
 }
 
 void SoftPathTable::remove(int a) {
   index(a, false);
+  const bool was_last = static_cast<int>(paths_[a].size()) - 2 == last_move_;
   paths_[a].clear();
-}
-
-int SoftPathTable::lastMove() const {
-  int last = -1;
-  for (const StatePath& p : paths_) last = std::max(last, static_cast<int>(p.size()) - 2);
-  return last;
+  if (was_last) {
+    last_move_ = -1;
+    for (const StatePath& q : paths_) last_move_ = std::max(last_move_, static_cast<int>(q.size()) - 2);
+  }
 }
 
 void SoftPathTable::newQuery() const {
@@ -175,6 +175,34 @@ void SoftPathTable::unsafeRuns(int a, StateId s, Action action,
     }
   });
   for (int b : met_) runs.insert(runs.end(), agent_runs_[b].begin(), agent_runs_[b].end());
+}
+
+void SoftPathTable::markSteps(std::uint64_t* steps, int first, int last) {
+  for (int t = first; t <= last;) {  // whole words at once where the run covers them
+    const int word = t >> 6, bit = t & 63;
+    const int n = std::min(64 - bit, last - t + 1);
+    steps[word] |= (n == 64 ? ~std::uint64_t{0} : ((std::uint64_t{1} << n) - 1) << bit);
+    t += n;
+  }
+}
+
+void SoftPathTable::markUnsafe(int a, StateId s, Action action, std::uint64_t* steps, int& lo, int& hi,
+                               int& forever_from) const {
+  if (cell_spans_.empty()) return;
+  const GridPose p = space_.graph(a).pose(s);
+  // Repeats from neighbouring cells cost a few word operations each: no bookkeeping per agent.
+  forEachMapCell(space_.probe(a, p.heading, action), {p.x, p.y}, width_, height_, [&](int cell) {
+    for (const Span& r : cell_spans_[cell]) {
+      if (r.agent == a) continue;
+      if (r.last == kNever) {
+        forever_from = std::min(forever_from, r.first);
+        continue;
+      }
+      lo = std::min(lo, r.first);
+      hi = std::max(hi, r.last);
+      markSteps(steps, r.first, r.last);
+    }
+  });
 }
 
 std::vector<int> SoftPathTable::partners(int a, const StatePath& path) const {

@@ -47,8 +47,15 @@ class SoftPathTable {
   static constexpr int kNever = 1 << 30;
   void unsafeRuns(int a, StateId s, Action action, std::vector<std::pair<int, int>>& runs,
                   int& forever_from) const;
+  /// unsafeRuns as a set of steps: sets bit t % 64 of steps[t / 64] for every step t of those
+  /// runs, widening [lo, hi] to them, and lowers forever_from as unsafeRuns does. `steps` must
+  /// hold lastMove() + 1 bits.
+  void markUnsafe(int a, StateId s, Action action, std::uint64_t* steps, int& lo, int& hi,
+                  int& forever_from) const;
+  /// Sets the bits of steps first..last (bit t % 64 of steps[t / 64]).
+  static void markSteps(std::uint64_t* steps, int first, int last);
   /// Last step during which some agent in the table moves (every path of length 1: -1).
-  int lastMove() const;
+  int lastMove() const { return last_move_; }
 
  private:
   // Adds (on = true) or removes the entries of a's path.
@@ -61,6 +68,7 @@ class SoftPathTable {
   const SearchSpace& space_;
   int width_, height_;
   std::vector<StatePath> paths_;
+  int last_move_ = -1;
   // Per map cell, the steps during which an agent sweeps it (waits and moves alike), one span
   // per stretch of consecutive steps; last == kNever: the agent stands there at its end. The
   // queries read these: the cells of a motion, not every motion nearby.
