@@ -115,8 +115,15 @@ LayeredResult planLayered(const GridMap& map, const Instance& instance, const Fl
   // within the deadline too (about 1 s for 300 robots, 4,000 steps).
   const Deadline polish =
       deadline.within(deadline.remaining() - std::min(budget.validation_reserve_s, 0.5 * deadline.remaining()));
+  if (options.compress && options.refine) result.compression = compressPlan(instance, graphs, paths, polish);
   if (options.refine) result.refinement = refinePlan(instance, graphs, paths, polish);
-  if (options.compress) result.compression = compressPlan(instance, graphs, paths, polish);
+  if (options.compress) {
+    const CompressionStats again = compressPlan(instance, graphs, paths, polish);
+    result.compression.passes += again.passes;
+    result.compression.waits_removed += again.waits_removed;
+    result.compression.time_s += again.time_s;
+    result.compression.deadline_hit = again.deadline_hit;
+  }
   result.plan.paths = std::move(paths);
 
   const ActionModel model = n > 0 ? graphs.graph(0).actionModel() : ActionModel{};
