@@ -1,6 +1,7 @@
 // The planning lattice (lattice.h): plans on lattices of 2-8 cells are valid on the map's own
 // cells, connections put any start and target on a robot's lattice, a door as wide as a robot
-// stays open when a lattice line passes through it, and the same input gives the same plan.
+// stays open when a lattice line passes through it, the same input gives the same plan, and a
+// robot that needs no connection does not wait for another robot's.
 #include <gtest/gtest.h>
 
 #include <iostream>
@@ -214,6 +215,23 @@ TEST(AnyYaw, StartsAndTargetsAtAnyYawAreTurnedFromAndToOnTheLatticeAndOff) {
     EXPECT_EQ(a[a.size() - 2], a.back()) << "the last step turns to the target yaw";
     EXPECT_GT(r.metrics.soc, 0);
   }
+}
+
+TEST(AnyYaw, ARobotLeavesAtOnceWhileAnotherTurnsFromItsStartYaw) {
+  // a turns from its start yaw before it drives; b, far from it, starts on its lattice and
+  // needs no turn: it drives at once, not after a's turn (the connections are retimed).
+  const GridMap map = freeMap(60, 30);
+  Instance instance;
+  instance.robots = {box("a", 6, 4, {8, 8, 0}, {20, 20, 0}), box("b", 6, 4, {50, 8, 1}, {50, 23, 1})};
+  instance.robots[0].start_yaw = 2.4;
+  const PlanningResult r = planFleet(map, instance, onLattice(3));
+  ASSERT_TRUE(validOnCells(map, instance, r));
+  const Path& a = r.plan.paths[0];
+  const Path& b = r.plan.paths[1];
+  ASSERT_GE(a.size(), 3u);
+  ASSERT_GE(b.size(), 2u);
+  EXPECT_EQ(a[0], a[1]) << "a's first step turns from its start yaw";
+  EXPECT_NE(b[0], b[1]) << "b waits at its start";
 }
 
 TEST(AnyYaw, AStartWhoseTurnHitsAWallIsNamedWithTheCell) {
