@@ -140,6 +140,22 @@ void SoftPathTable::collisionsHolding(int a, StateId s, int t, std::vector<int>&
   });
 }
 
+template <class F>
+void SoftPathTable::forOtherSpans(int a, StateId s, Action action, int& forever_from, F&& f) const {
+  const GridPose p = space_.graph(a).pose(s);
+  // The probe of the sweep meets every agent's sweep (or body) the sweep meets.
+  forEachMapCell(space_.probe(a, p.heading, action), {p.x, p.y}, width_, height_, [&](int cell) {
+    for (const Span& r : cell_spans_[cell]) {
+      if (r.agent == a) continue;
+      if (r.last == kNever) {
+        forever_from = std::min(forever_from, r.first);
+      } else {
+        f(r);
+      }
+    }
+  });
+}
+
 void SoftPathTable::unsafeRuns(int a, StateId s, Action action,
                                std::vector<std::pair<int, int>>& runs, int& forever_from) const {
   runs.clear();
@@ -147,32 +163,23 @@ void SoftPathTable::unsafeRuns(int a, StateId s, Action action,
   if (cell_spans_.empty()) return;
   newQuery();
   met_.clear();
-  const GridPose p = space_.graph(a).pose(s);
   // Neighbouring cells mostly hold the same pass of an agent, give or take a step: the spans
   // of each agent are merged as they come, so the caller sorts one run per pass, not per cell.
-  // The probe of the sweep meets every agent's sweep (or body) the sweep meets.
-  forEachMapCell(space_.probe(a, p.heading, action), {p.x, p.y}, width_, height_, [&](int cell) {
-    for (const Span& r : cell_spans_[cell]) {
-      if (r.agent == a) continue;
-      if (r.last == kNever) {
-        forever_from = std::min(forever_from, r.first);
-        continue;
-      }
-      std::vector<std::pair<int, int>>& mine = agent_runs_[r.agent];
-      if (firstVisit(r.agent)) {
-        mine.clear();
-        met_.push_back(r.agent);
-      }
-      bool merged = false;
-      for (auto& run : mine) {
-        if (r.first <= run.second + 1 && run.first <= r.last + 1) {
-          run = {std::min(run.first, r.first), std::max(run.second, r.last)};
-          merged = true;
-          break;
-        }
-      }
-      if (!merged) mine.emplace_back(r.first, r.last);
+  forOtherSpans(a, s, action, forever_from, [&](const Span& r) {
+    std::vector<std::pair<int, int>>& mine = agent_runs_[r.agent];
+    if (firstVisit(r.agent)) {
+      mine.clear();
+      met_.push_back(r.agent);
     }
+    bool merged = false;
+    for (auto& run : mine) {
+      if (r.first <= run.second + 1 && run.first <= r.last + 1) {
+        run = {std::min(run.first, r.first), std::max(run.second, r.last)};
+        merged = true;
+        break;
+      }
+    }
+    if (!merged) mine.emplace_back(r.first, r.last);
   });
   for (int b : met_) runs.insert(runs.end(), agent_runs_[b].begin(), agent_runs_[b].end());
 }
@@ -189,19 +196,11 @@ void SoftPathTable::markSteps(std::uint64_t* steps, int first, int last) {
 void SoftPathTable::markUnsafe(int a, StateId s, Action action, std::uint64_t* steps, int& lo, int& hi,
                                int& forever_from) const {
   if (cell_spans_.empty()) return;
-  const GridPose p = space_.graph(a).pose(s);
   // Repeats from neighbouring cells cost a few word operations each: no bookkeeping per agent.
-  forEachMapCell(space_.probe(a, p.heading, action), {p.x, p.y}, width_, height_, [&](int cell) {
-    for (const Span& r : cell_spans_[cell]) {
-      if (r.agent == a) continue;
-      if (r.last == kNever) {
-        forever_from = std::min(forever_from, r.first);
-        continue;
-      }
-      lo = std::min(lo, r.first);
-      hi = std::max(hi, r.last);
-      markSteps(steps, r.first, r.last);
-    }
+  forOtherSpans(a, s, action, forever_from, [&](const Span& r) {
+    lo = std::min(lo, r.first);
+    hi = std::max(hi, r.last);
+    markSteps(steps, r.first, r.last);
   });
 }
 

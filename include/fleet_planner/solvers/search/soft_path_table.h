@@ -60,6 +60,11 @@ class SoftPathTable {
  private:
   // Adds (on = true) or removes the entries of a's path.
   void index(int a, bool on);
+  struct Span;
+  // Calls f(span) for every span of another agent than a, at the cells of the probe of a doing
+  // `action` from s, that ends; lowers forever_from to the first step of those that do not.
+  template <class F>
+  void forOtherSpans(int a, StateId s, Action action, int& forever_from, F&& f) const;
   // Starts a query: a new query_ stamp (all stamps cleared when the counter wraps).
   void newQuery() const;
   // True the first time agent b is met in the current query (query_).
