@@ -98,7 +98,7 @@ CompressionStats compressPlan(const Instance& instance, const FleetGraphs& graph
                               const Deadline& deadline) {
   const auto start = std::chrono::steady_clock::now();
   CompressionStats stats;
-  if (!paths.empty()) {
+  if (!paths.empty() && !deadline.expired()) {
     Plan plan;
     plan.paths = std::move(paths);
     stats.waits_removed = retimeToEarliest(instance, plan, graphs.graph(0).actionModel());

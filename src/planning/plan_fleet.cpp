@@ -142,7 +142,7 @@ class LatticeAttempt {
     std::optional<Plan> full = assembleLatticePlan(instance_, *lattice, graphs, result_.plan, problem);
     if (!full) return step > 1 ? giveUp(step, problem) : finalFailure(SolveStatus::Infeasible, problem);
     result_.plan = std::move(*full);
-    if (options_.compress) {
+    if (options_.compress && !deadline_.expired()) {
       // The connections were placed one robot after another, each start padded to the longest:
       // retimed as a whole, robots leave as soon as the others allow.
       const auto t_retime = std::chrono::steady_clock::now();
