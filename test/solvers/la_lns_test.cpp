@@ -122,6 +122,14 @@ TEST(SoftPathTable, UnsafeRunsAgreeWithStepQueries) {
         std::vector<std::pair<int, int>> runs;
         int forever = 0;
         table.unsafeRuns(0, s, act, runs, forever);
+        // From a later step on: the same steps from there, none before; as runs and as bits.
+        const int from = static_cast<int>(rng.uniformInt(0, table.lastMove() + 2));
+        std::vector<std::pair<int, int>> later;
+        int later_forever = 0, lo = SoftPathTable::kNever, hi = -1, marked_forever = SoftPathTable::kNever;
+        table.unsafeRuns(0, s, act, later, later_forever, from);
+        std::vector<std::uint64_t> bits(static_cast<std::size_t>(table.lastMove() + 2) / 64 + 1, 0);
+        table.markUnsafe(0, s, act, bits.data(), lo, hi, marked_forever, from);
+        for (const auto& run : later) ASSERT_GE(run.first, from);
         for (int t = 0; t <= table.lastMove() + 3; ++t) {
           std::vector<int> met;
           table.collisions(0, s, act, t, met);
@@ -129,6 +137,12 @@ TEST(SoftPathTable, UnsafeRunsAgreeWithStepQueries) {
           for (const auto& [first, last] : runs) covered = covered || (first <= t && t <= last);
           ASSERT_EQ(covered, !met.empty()) << "round " << round << ", step " << t;
           unsafe_seen += covered ? 1 : 0;
+          if (t < from) continue;
+          bool covered_later = t >= later_forever;
+          for (const auto& [first, last] : later) covered_later = covered_later || (first <= t && t <= last);
+          ASSERT_EQ(covered_later, covered) << "from " << from << ", step " << t;
+          const bool bit = t >= marked_forever || (t <= table.lastMove() && ((bits[t / 64] >> (t % 64)) & 1));
+          ASSERT_EQ(bit, covered) << "marked from " << from << ", step " << t;
         }
       }
     }

@@ -4,9 +4,9 @@
 #include <array>
 #include <cstdlib>
 #include <queue>
-#include <unordered_map>
 
 #include "node_table.h"
+#include "stable_pool.h"
 
 namespace fleet_planner {
 
@@ -14,10 +14,9 @@ namespace {
 
 constexpr int kNever = SoftPathTable::kNever;
 
-// Steps during which a motion collides: sorted, disjoint, non-adjacent intervals.
-struct Unsafe {
-  std::vector<std::pair<int, int>> runs;  // inclusive; second == kNever: from first on
-};
+// Steps during which a motion collides: sorted, disjoint, non-adjacent intervals (inclusive;
+// second == kNever: from first on).
+using Unsafe = PoolRun<std::pair<int, int>>;
 
 struct Interval {
   int first, last;  // steps during which waiting is safe, inclusive; last == kNever: for good
@@ -33,20 +32,22 @@ struct Node {
 
 class Sipp {
  public:
-  Sipp(const SearchSpace& space, int a, const SoftPathTable& others)
-      : space_(space), a_(a), others_(others), graph_(space.graph(a)) {}
+  // A search from step `from` on: the steps before it are left out of every answer (counted
+  // safe), so that the passes of the others before it cost nothing.
+  Sipp(const SearchSpace& space, int a, const SoftPathTable& others, int from)
+      : space_(space), a_(a), others_(others), graph_(space.graph(a)), from_(from) {}
 
-  // Steps during which doing `action` from s collides with another agent or a moving obstacle.
-  const Unsafe& unsafe(StateId s, Action action) {
+  // Steps from from_ on during which doing `action` from s collides with another agent or a
+  // moving obstacle.
+  Unsafe unsafe(StateId s, Action action) {
     const std::uint64_t k = static_cast<std::uint64_t>(s) * kActions + static_cast<int>(action);
-    auto it = unsafe_.find(k);
-    if (it != unsafe_.end()) return it->second;
+    if (const int* known = unsafe_index_.find(k)) return unsafe_[*known];
     int forever = kNever, lo = kNever, hi = -1;
     if (others_.lastMove() < kSteps) {
       runs_.clear();
-      others_.markUnsafe(a_, s, action, steps_.data(), lo, hi, forever);
+      others_.markUnsafe(a_, s, action, steps_.data(), lo, hi, forever, from_);
     } else {
-      others_.unsafeRuns(a_, s, action, runs_, forever);
+      others_.unsafeRuns(a_, s, action, runs_, forever, from_);
     }
     if (forever != kNever) runs_.emplace_back(forever, kNever);
     const ReservationTable& reservations = space_.reservations();
@@ -54,28 +55,39 @@ class Sipp {
       const GridPose p = graph_.pose(s);
       const std::size_t from = runs_.size();
       reservations.takenIntervals(space_.probe(a_, p.heading, action), {p.x, p.y}, runs_);
+      std::size_t kept = from;
       for (std::size_t i = from; i < runs_.size(); ++i) {
         if (runs_[i].second == ReservationTable::kForever) runs_[i].second = kNever;
+        if (runs_[i].second < from_) continue;
+        runs_[kept++] = {std::max(runs_[i].first, from_), runs_[i].second};
       }
+      runs_.resize(kept);
     }
-    Unsafe u;
-    unionOf(runs_, u.runs, lo, hi);
-    return unsafe_.emplace(k, std::move(u)).first->second;
+    unionOf(runs_, merged_, lo, hi);
+    unsafe_index_.set(k, static_cast<int>(unsafe_.size()));
+    unsafe_.push_back(run_pool_.add(merged_));
+    return unsafe_.back();
   }
 
-  const std::vector<Interval>& intervals(StateId s) {
-    auto it = intervals_.find(s);
-    if (it != intervals_.end()) return it->second;
-    const Unsafe& u = unsafe(s, Action::Wait);
-    std::vector<Interval> out;
+  PoolRun<Interval> intervals(StateId s) {
+    if (const int* known = intervals_index_.find(static_cast<std::uint64_t>(s))) return intervals_[*known];
+    const Unsafe u = unsafe(s, Action::Wait);
+    std::vector<Interval>& out = interval_scratch_;
+    out.clear();
     int first = 0;
-    for (const auto& [from, to] : u.runs) {
+    bool closed = false;
+    for (const auto& [from, to] : u) {
       if (from > first) out.push_back({first, from - 1});
-      if (to == kNever) return intervals_.emplace(s, std::move(out)).first->second;
+      if (to == kNever) {
+        closed = true;
+        break;
+      }
       first = to + 1;
     }
-    out.push_back({first, kNever});
-    return intervals_.emplace(s, std::move(out)).first->second;
+    if (!closed) out.push_back({first, kNever});
+    intervals_index_.set(static_cast<std::uint64_t>(s), static_cast<int>(intervals_.size()));
+    intervals_.push_back(interval_pool_.add(out));
+    return intervals_.back();
   }
 
   // The union of `runs` (inclusive; second == kNever: from first on) as sorted, disjoint,
@@ -155,10 +167,10 @@ class Sipp {
   // Earliest departure step in [lo, hi] at which `u` allows the move (-1 if none).
   static int earliestDeparture(const Unsafe& u, int lo, int hi) {
     // The first run that ends at or after lo: if it has started by lo, leave right after it.
-    auto it = std::lower_bound(u.runs.begin(), u.runs.end(), lo,
+    auto it = std::lower_bound(u.begin(), u.end(), lo,
                                [](const std::pair<int, int>& r, int t) { return r.second < t; });
     int t = lo;
-    if (it != u.runs.end() && it->first <= lo) {
+    if (it != u.end() && it->first <= lo) {
       if (it->second == kNever) return -1;
       t = it->second + 1;
     }
@@ -170,8 +182,15 @@ class Sipp {
   int a_;
   const SoftPathTable& others_;
   const StateGraph& graph_;
-  std::unordered_map<std::uint64_t, Unsafe> unsafe_;
-  std::unordered_map<StateId, std::vector<Interval>> intervals_;
+  const int from_;
+  // The answers so far, by (state, action) and by state: indices into unsafe_ and intervals_.
+  NodeTable unsafe_index_, intervals_index_;
+  std::vector<Unsafe> unsafe_;
+  std::vector<PoolRun<Interval>> intervals_;
+  StablePool<std::pair<int, int>> run_pool_;
+  StablePool<Interval> interval_pool_;
+  std::vector<std::pair<int, int>> merged_;  // scratch
+  std::vector<Interval> interval_scratch_;   // scratch
   std::vector<std::pair<int, int>> runs_;  // scratch
   static constexpr int kSteps = 4096;          // steps of the bitset of unionOf
   std::array<std::uint64_t, kSteps / 64> steps_{};  // unionOf's bitset, all clear between calls
@@ -200,8 +219,8 @@ SafeIntervalResult searchBetween(const SearchSpace& space, int a, const SoftPath
   const StateGraph& g = space.graph(a);
   if (space.distance(a, from) < 0) return result;
   const bool forever = t1 == kNever;
-  Sipp sipp(space, a, others);
-  const std::vector<Interval>& first = sipp.intervals(from);
+  Sipp sipp(space, a, others, t0);
+  const PoolRun<Interval> first = sipp.intervals(from);
   int first_interval = -1;
   for (int i = 0; i < static_cast<int>(first.size()) && first_interval < 0; ++i) {
     if (first[i].first <= t0 && (first[i].last == kNever || t0 <= first[i].last)) first_interval = i;
@@ -269,11 +288,20 @@ SafeIntervalResult searchBetween(const SearchSpace& space, int a, const SoftPath
     g.forEachSuccessor(node.s, [&](Action act, StateId next) {
       if (act == Action::Wait || space.distance(a, next) < 0 || !space.allows(a, node.s, act))
         return;
-      const Unsafe& move = sipp.unsafe(node.s, act);
-      const std::vector<Interval>& there = sipp.intervals(next);
-      for (int j = 0; j < static_cast<int>(there.size()); ++j) {
-        if (there[j].last != kNever && there[j].last < node.g + 1) continue;
+      const PoolRun<Interval> there = sipp.intervals(next);
+      Unsafe move;
+      bool known = false;  // the move's unsafe steps are read only if some interval of next may be reached
+      // The first interval of next that lasts until node.g + 1 (they are sorted and disjoint).
+      const int skip = static_cast<int>(
+          std::lower_bound(there.begin(), there.end(), node.g + 1,
+                           [](const Interval& i, int t) { return i.last < t; }) -
+          there.begin());
+      for (int j = skip; j < static_cast<int>(there.size()); ++j) {
         if (here.last != kNever && there[j].first > here.last + 1) break;
+        if (!known) {
+          move = sipp.unsafe(node.s, act);
+          known = true;
+        }
         const int hi = std::min(here.last, there[j].last == kNever ? kNever : there[j].last - 1);
         const int departure =
             Sipp::earliestDeparture(move, std::max(node.g, there[j].first - 1), hi);

@@ -141,7 +141,8 @@ void SoftPathTable::collisionsHolding(int a, StateId s, int t, std::vector<int>&
 }
 
 template <class F>
-void SoftPathTable::forOtherSpans(int a, StateId s, Action action, int& forever_from, F&& f) const {
+void SoftPathTable::forOtherSpans(int a, StateId s, Action action, int from, int& forever_from,
+                                  F&& f) const {
   const GridPose p = space_.graph(a).pose(s);
   // The probe of the sweep meets every agent's sweep (or body) the sweep meets.
   forEachMapCell(space_.probe(a, p.heading, action), {p.x, p.y}, width_, height_, [&](int cell) {
@@ -149,15 +150,16 @@ void SoftPathTable::forOtherSpans(int a, StateId s, Action action, int& forever_
       if (r.agent == a) continue;
       if (r.last == kNever) {
         forever_from = std::min(forever_from, r.first);
-      } else {
-        f(r);
+      } else if (r.last >= from) {
+        f(r.agent, std::max(r.first, from), r.last);
       }
     }
   });
 }
 
 void SoftPathTable::unsafeRuns(int a, StateId s, Action action,
-                               std::vector<std::pair<int, int>>& runs, int& forever_from) const {
+                               std::vector<std::pair<int, int>>& runs, int& forever_from,
+                               int from) const {
   runs.clear();
   forever_from = kNever;
   if (cell_spans_.empty()) return;
@@ -165,21 +167,21 @@ void SoftPathTable::unsafeRuns(int a, StateId s, Action action,
   met_.clear();
   // Neighbouring cells mostly hold the same pass of an agent, give or take a step: the spans
   // of each agent are merged as they come, so the caller sorts one run per pass, not per cell.
-  forOtherSpans(a, s, action, forever_from, [&](const Span& r) {
-    std::vector<std::pair<int, int>>& mine = agent_runs_[r.agent];
-    if (firstVisit(r.agent)) {
+  forOtherSpans(a, s, action, from, forever_from, [&](int agent, int first, int last) {
+    std::vector<std::pair<int, int>>& mine = agent_runs_[agent];
+    if (firstVisit(agent)) {
       mine.clear();
-      met_.push_back(r.agent);
+      met_.push_back(agent);
     }
     bool merged = false;
     for (auto& run : mine) {
-      if (r.first <= run.second + 1 && run.first <= r.last + 1) {
-        run = {std::min(run.first, r.first), std::max(run.second, r.last)};
+      if (first <= run.second + 1 && run.first <= last + 1) {
+        run = {std::min(run.first, first), std::max(run.second, last)};
         merged = true;
         break;
       }
     }
-    if (!merged) mine.emplace_back(r.first, r.last);
+    if (!merged) mine.emplace_back(first, last);
   });
   for (int b : met_) runs.insert(runs.end(), agent_runs_[b].begin(), agent_runs_[b].end());
 }
@@ -194,13 +196,13 @@ void SoftPathTable::markSteps(std::uint64_t* steps, int first, int last) {
 }
 
 void SoftPathTable::markUnsafe(int a, StateId s, Action action, std::uint64_t* steps, int& lo, int& hi,
-                               int& forever_from) const {
+                               int& forever_from, int from) const {
   if (cell_spans_.empty()) return;
   // Repeats from neighbouring cells cost a few word operations each: no bookkeeping per agent.
-  forOtherSpans(a, s, action, forever_from, [&](const Span& r) {
-    lo = std::min(lo, r.first);
-    hi = std::max(hi, r.last);
-    markSteps(steps, r.first, r.last);
+  forOtherSpans(a, s, action, from, forever_from, [&](int, int first, int last) {
+    lo = std::min(lo, first);
+    hi = std::max(hi, last);
+    markSteps(steps, first, last);
   });
 }
 

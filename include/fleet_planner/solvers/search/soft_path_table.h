@@ -43,15 +43,16 @@ class SoftPathTable {
   /// The steps during which agent a doing `action` from s would collide with an agent in the
   /// table (other than a), as (first, last) runs, unsorted and possibly overlapping, up to
   /// lastMove(); and the first step from which it collides for good with an agent standing at
-  /// its end (kNever if none).
+  /// its end (kNever if none). Steps before `from` are left out (runs start at `from` or later):
+  /// a search from step `from` on never asks about them.
   static constexpr int kNever = 1 << 30;
   void unsafeRuns(int a, StateId s, Action action, std::vector<std::pair<int, int>>& runs,
-                  int& forever_from) const;
+                  int& forever_from, int from = 0) const;
   /// unsafeRuns as a set of steps: sets bit t % 64 of steps[t / 64] for every step t of those
   /// runs, widening [lo, hi] to them, and lowers forever_from as unsafeRuns does. `steps` must
   /// hold lastMove() + 1 bits.
   void markUnsafe(int a, StateId s, Action action, std::uint64_t* steps, int& lo, int& hi,
-                  int& forever_from) const;
+                  int& forever_from, int from = 0) const;
   /// Sets the bits of steps first..last (bit t % 64 of steps[t / 64]).
   static void markSteps(std::uint64_t* steps, int first, int last);
   /// Last step during which some agent in the table moves (every path of length 1: -1).
@@ -61,10 +62,11 @@ class SoftPathTable {
   // Adds (on = true) or removes the entries of a's path.
   void index(int a, bool on);
   struct Span;
-  // Calls f(span) for every span of another agent than a, at the cells of the probe of a doing
-  // `action` from s, that ends; lowers forever_from to the first step of those that do not.
+  // Calls f(first, last) for every span of another agent than a, at the cells of the probe of a
+  // doing `action` from s, that ends at `from` or later (first raised to `from`); lowers
+  // forever_from to the first step of those that do not end.
   template <class F>
-  void forOtherSpans(int a, StateId s, Action action, int& forever_from, F&& f) const;
+  void forOtherSpans(int a, StateId s, Action action, int from, int& forever_from, F&& f) const;
   // Starts a query: a new query_ stamp (all stamps cleared when the counter wraps).
   void newQuery() const;
   // True the first time agent b is met in the current query (query_).
