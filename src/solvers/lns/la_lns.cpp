@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <numeric>
 
+#include "fleet_planner/solvers/lns/end_game.h"
 #include "fleet_planner/solvers/lns/parking_plan.h"
 #include "fleet_planner/solvers/lns/stage_clearing.h"
 #include "fleet_planner/solvers/registry.h"
@@ -99,6 +100,14 @@ std::optional<SolveResult> LnsSearch::parkFirst(const std::vector<int>& order, s
   const std::optional<ParkingPlan> plan = parkingPlan(space_, order, deadline, o, stats_.low_level_expansions);
   if (!plan) return std::nullopt;
   if (plan->robots_home == n_) return success(plan->paths);
+  if (options_.end_game) {
+    const Deadline end_deadline =
+        problem_.deadline.within(problem_.deadline.remaining() * options_.end_game_share);
+    const std::optional<std::vector<StatePath>> finished =
+        endGame(space_, problem_, plan->paths, plan->home, options_, end_deadline, EndGameOptions{},
+                stats_.low_level_expansions);
+    if (finished) return success(*finished);
+  }
   // A subproblem of fewer than twice `parking_robots` robots that the parking plan leaves
   // unfinished starts from the soft first plan of all its robots instead: the soft repairs
   // converge there, and robots that wait in pockets make long paths to repair around.

@@ -83,6 +83,11 @@ struct LaLnsOptions {
   int parking_robots = 8;
   long long parking_expansions = 3'000'000;
   double parking_share = 0.5;
+  /// A parking plan that leaves robots short of their targets is finished by its end game
+  /// (end_game.h): those robots and the robots on their ways planned together once everybody
+  /// else has stopped, in at most `end_game_share` of the time left.
+  bool end_game = true;
+  double end_game_share = 0.3;
   /// Before each repair, one local repair of a colliding agent (path_splice.h): a few steps of
   /// its path around one of its collisions replanned collision-free, the rest kept (delayed if
   /// need be).
