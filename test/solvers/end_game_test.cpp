@@ -50,6 +50,23 @@ TEST(EndGame, PlansTheRobotLeftWithTheRobotOnItsWayAfterEverybodyHasStopped) {
   EXPECT_EQ(finish(space, sub, parked, {0, 1, 1}), done) << "same input, same plan";
 }
 
+TEST(EndGame, KeepsWithinTheCallersExpansionBudget) {
+  const World w = corridorAndLane();
+  Subproblem sub = allRobots(w);
+  const SearchSpace space(sub);
+  const std::vector<StatePath> parked = {{space.start(0)}, {space.start(1)}, {space.start(2)}};
+  const std::vector<char> home = {0, 1, 0};
+  sub.max_expansions = 1000;
+  long long spent = 1000;  // all of it spent before the end game
+  EXPECT_FALSE(endGame(space, sub, parked, home, LaLnsOptions{}, Deadline::in(5.0), EndGameOptions{}, spent)
+                   .has_value());
+  spent = 0;
+  EXPECT_TRUE(endGame(space, sub, parked, home, LaLnsOptions{}, Deadline::in(5.0), EndGameOptions{}, spent)
+                  .has_value());
+  EXPECT_GT(spent, 0);
+  EXPECT_LE(spent, 1000 + 1000) << "the group's search stops near the budget";
+}
+
 TEST(EndGame, AnswersNoneWhereTheRobotsLeftCannotPass) {
   // Two robots trading the ends of a corridor without a pocket.
   const World w(mapFromRows({"..............", "@@@@@@@@@@@@@@"}),

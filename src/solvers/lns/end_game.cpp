@@ -88,6 +88,9 @@ std::optional<std::vector<StatePath>> endGame(const SearchSpace& space, const Su
     sub.graphs = problem.graphs;
     sub.blocked = problem.blocked;
     sub.seed = problem.seed;
+    // The caller's expansion budget holds for the group too (outcomes that do not depend on the
+    // machine's speed).
+    if (problem.max_expansions >= 0) sub.max_expansions = std::max(0LL, problem.max_expansions - expansions);
     for (const MovingObstacle& m : problem.moving) {
       if (!m.path.empty()) sub.blocked.push_back({m.robot, m.path.back()});
     }

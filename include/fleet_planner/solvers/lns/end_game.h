@@ -34,7 +34,8 @@ struct EndGameOptions {
 /// Every agent's path (as `paths`, extended) with the agents not `home` at their targets; none
 /// if no round found a plan before the deadline. `problem` is the subproblem `space` was made
 /// from (without returning robots); the group is planned by LA-LNS with `lns` options (its own
-/// end game off). The expansions spent are added to `expansions`.
+/// end game off) within what is left of problem.max_expansions, `expansions` counting as
+/// spent. The expansions spent are added to `expansions`.
 std::optional<std::vector<StatePath>> endGame(const SearchSpace& space, const Subproblem& problem,
                                               const std::vector<StatePath>& paths,
                                               const std::vector<char>& home,
