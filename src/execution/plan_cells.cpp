@@ -29,7 +29,7 @@ PlanCells::PlanCells(const Instance& instance, const Plan& plan, const ActionMod
     const Path& path = plan.paths[i];
     if (path.empty()) throw InvalidInput(robotLabel(robot) + ": path is empty");
     paths_.push_back(&path);
-    footprints_.push_back(std::make_unique<FootprintCells>(robot.footprint, model.step));
+    footprints_.push_back(sharedFootprintCells(robot.footprint, model.step));
     cells_.push_back(std::make_unique<RobotCells>(robot, *footprints_.back(), path));
     if (!cells_.back()->shapeProblem().empty())
       throw InvalidInput(robotLabel(robot) + ": " + cells_.back()->shapeProblem());

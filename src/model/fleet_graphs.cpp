@@ -23,7 +23,7 @@ FleetGraphs::Groups FleetGraphs::group(const std::vector<Footprint>& footprints,
       if (footprints[j] == footprints[i]) found = robot_graph[j];
     }
     if (found < 0) {
-      auto cells = std::make_shared<const FootprintCells>(footprints[i], step);
+      auto cells = sharedFootprintCells(footprints[i], step);
       auto range = by_hash.equal_range(cells->cellsHash());
       for (auto it = range.first; it != range.second && found < 0; ++it) {
         if (distinct[it->second]->sameCells(*cells)) found = it->second;

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <deque>
+#include <mutex>
 
 #include "fleet_planner/runtime/errors.h"
 #include "fleet_planner/model/geometry.h"
@@ -198,6 +200,29 @@ bool FootprintCells::sameCells(const FootprintCells& other) const {
     }
   }
   return true;
+}
+
+std::shared_ptr<const FootprintCells> sharedFootprintCells(const Footprint& footprint, int step) {
+  constexpr std::size_t kKept = 64;
+  static std::mutex mutex;
+  static std::deque<std::shared_ptr<const FootprintCells>> kept;  // newest first
+  const auto find = [&]() -> std::shared_ptr<const FootprintCells> {
+    for (const auto& cells : kept) {
+      if (cells->step() == step && cells->footprint() == footprint) return cells;
+    }
+    return nullptr;
+  };
+  {
+    const std::lock_guard<std::mutex> lock(mutex);
+    if (auto cells = find()) return cells;
+  }
+  // Built outside the lock: other threads' lookups need not wait for the geometry.
+  auto made = std::make_shared<const FootprintCells>(footprint, step);
+  const std::lock_guard<std::mutex> lock(mutex);
+  if (auto cells = find()) return cells;  // another thread built it meanwhile
+  kept.push_front(made);
+  if (kept.size() > kKept) kept.pop_back();
+  return made;
 }
 
 }  // namespace fleet_planner

@@ -44,7 +44,7 @@ void validateInstance(const GridMap& map, const Instance& instance) {
     if (!ids.insert(robot.id).second) throw InvalidInput(robotLabel(robot) + ": duplicate robot id");
     const std::string problem = footprintProblem(robot.footprint);
     if (!problem.empty()) throw InvalidInput(robotLabel(robot) + ": footprint: " + problem);
-    const FootprintCells cells(robot.footprint);
+    const FootprintCells& cells = *sharedFootprintCells(robot.footprint);
     for (int h = 0; h < kHeadings; ++h) {
       const CellSet& body = cells.body(h);
       if (body.maxX() - body.minX() + 1 > map.width() || body.maxY() - body.minY() + 1 > map.height()) {

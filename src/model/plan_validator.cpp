@@ -90,7 +90,7 @@ class Checker {
       }
     }
     cells_.reserve(n);
-    for (const Robot& r : instance_.robots) cells_.push_back(std::make_unique<FootprintCells>(r.footprint, model_.step));
+    for (const Robot& r : instance_.robots) cells_.push_back(sharedFootprintCells(r.footprint, model_.step));
     for (int i = 0; i < n; ++i) {
       motions_.push_back(std::make_unique<RobotCells>(instance_.robots[i], *cells_[i], plan_.paths[i]));
       if (!motions_[i]->shapeProblem().empty())
@@ -194,7 +194,7 @@ class Checker {
   const ActionModel& model_;
   std::vector<bool> checked_;  ///< robots whose paths and conflicts are checked
   int from_ = 0;               ///< the first state checked
-  std::vector<std::unique_ptr<FootprintCells>> cells_;
+  std::vector<std::shared_ptr<const FootprintCells>> cells_;
   std::vector<std::unique_ptr<RobotCells>> motions_;
 };
 

@@ -203,5 +203,23 @@ TEST(FootprintCells, RejectsInvalidFootprints) {
   EXPECT_THROW(FootprintCells(Footprint::polygon({{0, 0}, {1, 0}, {2, 0}})), InvalidInput);          // flat
 }
 
+TEST(FootprintCells, SharedCellsAreBuiltOncePerFootprintAndStep) {
+  Footprint block = Footprint::block(-1.2, -0.6, 1.7, 0.6);
+  const auto first = sharedFootprintCells(block, 3);
+  EXPECT_EQ(first, sharedFootprintCells(Footprint::block(-1.2, -0.6, 1.7, 0.6), 3));
+  EXPECT_NE(first, sharedFootprintCells(block, 2));
+  block.sweep_tolerance = 0.2;
+  EXPECT_NE(first, sharedFootprintCells(block, 3));
+  // The shared cells are those of a fresh discretisation.
+  const FootprintCells fresh(Footprint::block(-1.2, -0.6, 1.7, 0.6), 3);
+  EXPECT_TRUE(first->sameCells(fresh));
+  EXPECT_EQ(first->step(), 3);
+  EXPECT_THROW(sharedFootprintCells(Footprint::circle(0.0)), InvalidInput);
+  // Beyond the 64 kept, the oldest are built again; the ones still held stay valid.
+  for (int i = 1; i <= 70; ++i) sharedFootprintCells(Footprint::circle(0.1 * i), 1);
+  EXPECT_NE(first, sharedFootprintCells(Footprint::block(-1.2, -0.6, 1.7, 0.6), 3));
+  EXPECT_TRUE(first->sameCells(fresh));
+}
+
 }  // namespace
 }  // namespace fleet_planner

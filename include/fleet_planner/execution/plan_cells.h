@@ -49,7 +49,7 @@ class PlanCells {
 
  private:
   std::vector<const Path*> paths_;
-  std::vector<std::unique_ptr<FootprintCells>> footprints_;
+  std::vector<std::shared_ptr<const FootprintCells>> footprints_;
   std::vector<std::unique_ptr<RobotCells>> cells_;
   std::vector<std::vector<const CellSet*>> sweeps_;  ///< [robot][t], t < lastState
   std::vector<std::vector<bool>> moves_;             ///< [robot][t], t < lastState

@@ -15,6 +15,7 @@
 ///   to each edge), a superset, so collision checks stay safe.
 #include <array>
 #include <functional>
+#include <memory>
 
 #include "fleet_planner/model/action.h"
 #include "fleet_planner/model/cell_set.h"
@@ -58,6 +59,12 @@ class FootprintCells {
   int max_norm_sq_ = 0;
   std::size_t hash_ = 0;
 };
+
+/// FootprintCells(footprint, step), built once per process and shared: the planner, the
+/// validator, the earliest schedule and the execution checks each need the cells of every robot,
+/// and a fleet has few distinct footprints. Thread-safe; the last 64 distinct (footprint, step)
+/// pairs built are kept. Throws InvalidInput as the constructor does.
+std::shared_ptr<const FootprintCells> sharedFootprintCells(const Footprint& footprint, int step = 1);
 
 /// Cells the footprint covers at any `yaw` (radians), relative to its cell: for starts and
 /// targets off the grid headings.
