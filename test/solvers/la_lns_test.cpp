@@ -239,6 +239,44 @@ TEST(SafeIntervalSearch, ArrivalBoundPrunesLaterArrivals) {
   EXPECT_LT(before.expansions, free.expansions);
 }
 
+// A robot of another subproblem stands beside the waiter's target and drives onto it late
+// (step 101), turns round there and drives back (step 104): the waiter can hold its target for good only after that. With a
+// bound on the arrival, reservations after the bound still count as "not free for good": a
+// bound before the pass answers NoPath, a bound during or after it the unbounded arrival.
+TEST(SafeIntervalSearch, ArrivalBoundKeepsPassesOverTheTargetAfterIt) {
+  const World w(freeMap(8, 1), {dot("passer", {7, 0, 1}, {7, 0, 0}), dot("waiter", {0, 0, 0}, {6, 0, 0})});
+  Subproblem sub = allRobots(w);
+  sub.robots = {1};
+  MovingObstacle m;
+  m.robot = 0;
+  m.path.assign(101, GridPose{7, 0, 1});
+  for (const GridPose& q : {GridPose{6, 0, 1}, GridPose{6, 0, 2}, GridPose{6, 0, 0}, GridPose{7, 0, 0}})
+    m.path.push_back(q);
+  sub.moving.push_back(m);
+  const SearchSpace space(sub);
+  const SoftPathTable table(space);
+  const SafeIntervalResult free = safeIntervalSearch(space, 0, table, Deadline::in(5.0), 100000);
+  ASSERT_EQ(free.outcome, SafeIntervalResult::Outcome::Found);
+  const int earliest = static_cast<int>(free.path.size()) - 1;
+  ASSERT_GT(earliest, 103) << "the waiter holds its target only after the pass";
+  for (int bound : {50, 100, 102, earliest - 1}) {
+    const SafeIntervalResult r = safeIntervalSearch(space, 0, table, Deadline::in(5.0), 100000, bound);
+    EXPECT_EQ(r.outcome, SafeIntervalResult::Outcome::NoPath) << "bound " << bound;
+  }
+  for (int bound : {earliest, earliest + 50}) {
+    const SafeIntervalResult r = safeIntervalSearch(space, 0, table, Deadline::in(5.0), 100000, bound);
+    ASSERT_EQ(r.outcome, SafeIntervalResult::Outcome::Found) << "bound " << bound;
+    EXPECT_EQ(static_cast<int>(r.path.size()) - 1, earliest) << "bound " << bound;
+    Plan plan;
+    plan.paths.push_back(m.path);
+    Path p;
+    for (StateId s : r.path) p.push_back(space.graph(0).pose(s));
+    plan.paths.push_back(p);
+    const ValidationResult v = validatePlan(w.map, w.instance, plan);
+    EXPECT_TRUE(v.valid()) << "bound " << bound << ": " << v.violation.message;
+  }
+}
+
 TEST(SafeIntervalSearch, NoCollisionFreePathIsNoPath) {
   // The runner parks for good on the only way to the waiter's target.
   const World w(freeMap(7, 1),
