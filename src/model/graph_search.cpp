@@ -4,7 +4,6 @@
 #include <functional>
 #include <queue>
 #include <tuple>
-#include <unordered_map>
 
 namespace fleet_planner {
 
@@ -68,10 +67,21 @@ int stepsBound(const StateGraph& graph, const GridPose& from, const GridPose& to
 }
 
 int stepsBetween(const StateGraph& graph, StateId from, StateId to, long long max_expansions, long long& expansions) {
-  if (!graph.valid(from) || !graph.valid(to)) return -1;
-  const GridPose goal = graph.pose(to);
-  auto h = [&](StateId s) { return stepsBound(graph, graph.pose(s), goal); };
-  std::unordered_map<StateId, int> cost{{from, 0}};  // the states seen: few of a large graph
+  return WaySearch(graph).steps(from, to, max_expansions, expansions);
+}
+
+int WaySearch::steps(StateId from, StateId to, long long max_expansions, long long& expansions) {
+  if (!graph_.valid(from) || !graph_.valid(to)) return -1;
+  if (cost_.empty()) cost_.assign(static_cast<std::size_t>(graph_.stateIdCount()), -1);
+  for (StateId s : touched_) cost_[s] = -1;
+  touched_.clear();
+  const GridPose goal = graph_.pose(to);
+  auto h = [&](StateId s) { return stepsBound(graph_, graph_.pose(s), goal); };
+  auto set = [&](StateId s, int g) {
+    if (cost_[s] < 0) touched_.push_back(s);
+    cost_[s] = g;
+  };
+  set(from, 0);
   // (f, -g, state): among equal f the deepest first, which crosses a plateau of equal f along
   // one way instead of all of it; then by state id (deterministic).
   using Entry = std::tuple<int, int, StateId>;
@@ -81,14 +91,13 @@ int stepsBetween(const StateGraph& graph, StateId from, StateId to, long long ma
   while (!open.empty() && expansions < limit) {
     const auto [f, minus_g, s] = open.top();
     open.pop();
-    const int g = cost[s];
+    const int g = cost_[s];
     if (-minus_g > g) continue;  // superseded
     if (s == to) return g;
     ++expansions;
-    graph.forEachSuccessor(s, [&](Action, StateId next) {
-      const auto it = cost.find(next);
-      if (it != cost.end() && it->second <= g + 1) return;
-      cost[next] = g + 1;
+    graph_.forEachSuccessor(s, [&](Action, StateId next) {
+      if (cost_[next] >= 0 && cost_[next] <= g + 1) return;
+      set(next, g + 1);
       open.push({g + 1 + h(next), -(g + 1), next});
     });
   }

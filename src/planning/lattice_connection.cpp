@@ -149,8 +149,8 @@ std::vector<EndWay> targetWays(const Robot& r, const StateGraph& g, const GridMa
 /// Every valid way to connect robot `r`, cheapest first (ties in a fixed order): on a lattice of
 /// step > 1, the connecting steps plus the robot's way on the lattice they choose. `problem` is
 /// set (with its kind) when an end has no way at all. Adds the A* expansions to `way_expansions`.
-std::vector<Choice> choicesFor(const Robot& r, int index, const StateGraph& g, const GridMap& map, int s,
-                               std::vector<RobotProblem>& problems, long long& way_expansions) {
+std::vector<Choice> choicesFor(const Robot& r, int index, const StateGraph& g, WaySearch& ways, const GridMap& map,
+                               int s, std::vector<RobotProblem>& problems, long long& way_expansions) {
   std::vector<Choice> out;
   const GridPose S = r.start, G = r.target;
   std::string why;
@@ -221,7 +221,7 @@ std::vector<Choice> choicesFor(const Robot& r, int index, const StateGraph& g, c
       const auto key = std::make_pair(g.id(c.prefix.back()), g.id(c.suffix.front()));
       auto it = known.find(key);
       if (it == known.end()) {
-        const int way = stepsBetween(g, g.id(c.prefix.back()), g.id(c.suffix.front()), kWayExpansions, way_expansions);
+        const int way = ways.steps(g.id(c.prefix.back()), g.id(c.suffix.front()), kWayExpansions, way_expansions);
         it = known.emplace(key, way).first;
       }
       c.cost += (it->second >= 0 ? it->second : kNoWay) - stepsBound(g, c.prefix.back(), c.suffix.front());
@@ -296,8 +296,11 @@ LatticeInstance connectToLattice(const GridMap& map, const Instance& instance, c
   std::vector<std::vector<Choice>> choices(n);
   std::vector<std::size_t> chosen(n, 0);
   long long way_expansions = 0;
+  std::map<const StateGraph*, WaySearch> ways;  // robots with equal cells share a graph
   for (int i = 0; i < n; ++i) {
-    choices[i] = choicesFor(instance.robots[i], i, graphs.graph(i), map, step, out.problems, way_expansions);
+    const StateGraph& g = graphs.graph(i);
+    WaySearch& way = ways.try_emplace(&g, g).first->second;
+    choices[i] = choicesFor(instance.robots[i], i, g, way, map, step, out.problems, way_expansions);
     if (!out.problems.empty()) {
       out.problem = out.problems.front().reason;
       return out;

@@ -112,6 +112,7 @@ TEST(StateGraph, StepsBetweenTwoStatesMatchTheDistances) {
       return GridPose{static_cast<int>(rng.uniformInt(0, 17)), static_cast<int>(rng.uniformInt(0, 13)),
                       static_cast<int>(rng.uniformInt(0, 3))};
     };
+    WaySearch kept(g);
     for (int pair = 0; pair < 10; ++pair) {
       const StateId from = g.id(pose());
       if (!g.valid(from)) continue;
@@ -122,6 +123,8 @@ TEST(StateGraph, StepsBetweenTwoStatesMatchTheDistances) {
       long long expansions = 0;
       const int steps = stepsBetween(g, from, to, 1'000'000, expansions);
       EXPECT_EQ(steps, distancesTo(g, to)[from]) << "seed " << seed << " pair " << pair;
+      // The same search kept across the pairs answers the same (its table reset between them).
+      EXPECT_EQ(kept.steps(from, to, 1'000'000, expansions), steps) << "seed " << seed << " pair " << pair;
       (steps >= 0 ? found : none) += 1;
     }
   }

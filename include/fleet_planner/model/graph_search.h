@@ -26,4 +26,18 @@ int stepsBound(const StateGraph& graph, const GridPose& from, const GridPose& to
 /// expansions. The expansions made are added to `expansions`.
 int stepsBetween(const StateGraph& graph, StateId from, StateId to, long long max_expansions, long long& expansions);
 
+/// stepsBetween, for many searches on one graph: the costs live in a table over the graph's
+/// states, made once and reset where the last search wrote (a search per call would hash every
+/// state it reaches, or clear a table of the whole graph).
+class WaySearch {
+ public:
+  explicit WaySearch(const StateGraph& graph) : graph_(graph) {}
+  int steps(StateId from, StateId to, long long max_expansions, long long& expansions);
+
+ private:
+  const StateGraph& graph_;
+  std::vector<std::int32_t> cost_;  // -1: not reached; made on the first search
+  std::vector<StateId> touched_;    // the entries of cost_ the last search set
+};
+
 }  // namespace fleet_planner
