@@ -240,9 +240,10 @@ TEST(SafeIntervalSearch, ArrivalBoundPrunesLaterArrivals) {
 }
 
 // A robot of another subproblem stands beside the waiter's target and drives onto it late
-// (step 101), turns round there and drives back (step 104): the waiter can hold its target for good only after that. With a
-// bound on the arrival, reservations after the bound still count as "not free for good": a
-// bound before the pass answers NoPath, a bound during or after it the unbounded arrival.
+// (step 101), turns round there and drives back (step 104): the waiter can hold its target for
+// good only after that. With a bound on the arrival, reservations after the bound still count
+// as "not free for good": a bound before the end of the pass answers NoPath, a bound at or after
+// the unbounded arrival finds that arrival.
 TEST(SafeIntervalSearch, ArrivalBoundKeepsPassesOverTheTargetAfterIt) {
   const World w(freeMap(8, 1), {dot("passer", {7, 0, 1}, {7, 0, 0}), dot("waiter", {0, 0, 0}, {6, 0, 0})});
   Subproblem sub = allRobots(w);

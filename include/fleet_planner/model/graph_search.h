@@ -21,9 +21,11 @@ bool isReachable(const StateGraph& graph, StateId from, StateId to);
 /// (a move advances the graph's step), and a quarter turn if the headings differ.
 int stepsBound(const StateGraph& graph, const GridPose& from, const GridPose& to);
 
-/// Steps from `from` to `to` (as distancesTo would count them) by A* with stepsBound, without
-/// filling the whole graph; -1 if `to` is unreachable or not found within `max_expansions`
-/// expansions. The expansions made are added to `expansions`.
+/// Steps from `from` to `to` (as distancesTo would count them) by A* with stepsBound, expanding
+/// few states of a large graph; -1 if `to` is unreachable or not found within `max_expansions`
+/// expansions. The expansions made are added to `expansions`. One search of a WaySearch made
+/// for it (a cost table over the whole graph): for several searches on one graph, keep a
+/// WaySearch.
 int stepsBetween(const StateGraph& graph, StateId from, StateId to, long long max_expansions, long long& expansions);
 
 /// stepsBetween, for many searches on one graph: the costs live in a table over the graph's
