@@ -58,7 +58,7 @@ void checkMetric(const io::YamlMapping& fields, const std::string& key, long lon
 
 }  // namespace
 
-std::string planToYaml(const Instance& instance, const Plan& plan) {
+std::string planToYaml(const Instance& instance, const Plan& plan, bool backward_moves) {
   if (plan.paths.size() != instance.robots.size()) {
     throw InvalidInput("plan has " + std::to_string(plan.paths.size()) + " paths for " +
                        std::to_string(instance.robots.size()) + " robots");
@@ -73,8 +73,9 @@ std::string planToYaml(const Instance& instance, const Plan& plan) {
   out << "# fleet_planner plan: each path lists [x, y, heading] at time steps 0, 1, 2, ...\n"
       << "format: " << kFormat << "\n"
       << "soc: " << metrics.soc << "\n"
-      << "makespan: " << metrics.makespan << "\n"
-      << "robots:\n";
+      << "makespan: " << metrics.makespan << "\n";
+  if (backward_moves) out << "backward_moves: true\n";
+  out << "robots:\n";
   for (std::size_t i = 0; i < plan.paths.size(); ++i) {
     const Robot& robot = instance.robots[i];
     out << "  - id: " << io::yamlScalar(robot.id) << "\n"
@@ -90,13 +91,21 @@ std::string planToYaml(const Instance& instance, const Plan& plan) {
   return out.str();
 }
 
-void savePlan(const Instance& instance, const Plan& plan, const std::string& path) {
-  io::writeTextFile(path, planToYaml(instance, plan));
+void savePlan(const Instance& instance, const Plan& plan, const std::string& path, bool backward_moves) {
+  io::writeTextFile(path, planToYaml(instance, plan, backward_moves));
 }
 
-Plan loadPlan(const std::string& path, const Instance& instance) {
+Plan loadPlan(const std::string& path, const Instance& instance, bool* backward_moves) {
   const YAML::Node root = io::loadYamlFile(path);
-  const io::YamlMapping top(root, path, 0, "the plan", {"format", "soc", "makespan", "robots"});
+  const io::YamlMapping top(root, path, 0, "the plan", {"format", "soc", "makespan", "backward_moves", "robots"});
+  bool backward = false;
+  if (const io::YamlField* b = top.find("backward_moves")) {
+    const std::string text = b->node.IsScalar() ? b->node.Scalar() : "";
+    if (text != "true" && text != "false")
+      throw ParseError(path, b->line, "backward_moves must be true or false, got " + io::quoted(text));
+    backward = text == "true";
+  }
+  if (backward_moves) *backward_moves = backward;
   const io::YamlField& format = top.require("format");
   const std::string format_text = format.node.IsScalar() ? format.node.Scalar() : "";
   if (format_text != kFormat) {

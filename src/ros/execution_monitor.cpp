@@ -36,6 +36,7 @@ void ExecutionMonitor::start(ExecutablePlan plan, double seconds_per_step, const
                              const ros::Time& now) {
   ActionModel model;
   model.step = plan.lattice_step;
+  model.allow_backward = plan.allow_backward;
   StepDependencies dependencies = buildStepDependencies(plan.instance, plan.plan, model);
   const std::size_t count = dependencies.count();
   tracker_ = std::make_unique<ExecutionTracker>(plan.plan, std::move(dependencies));
@@ -219,6 +220,7 @@ const PlanCells& ExecutionMonitor::planCells() {
   if (!cells_) {
     ActionModel model;
     model.step = plan_.lattice_step;
+    model.allow_backward = plan_.allow_backward;
     // Only the steps from the smallest progress on are asked about (progress only grows).
     int done = tracker_->progress(0);
     for (int i = 1; i < tracker_->robots(); ++i) done = std::min(done, tracker_->progress(i));

@@ -224,6 +224,7 @@ void FleetPlanningService::planChecked(const Request& request, const StartLookup
   if (config_.lattice_resolution > 0) {
     options.lattice_step = std::max(1, static_cast<int>(std::lround(config_.lattice_resolution / grid.resolution())));
   }
+  options.model.allow_backward = config_.allow_backward;
   PlanningCall planning_call;
   planning_call.started = t0;
   planning_call.cancel = cancel;
@@ -243,12 +244,14 @@ void FleetPlanningService::planChecked(const Request& request, const StartLookup
   if (failOnRobotErrors(call)) return;
 
   fillResponse(instance, grid, result, config_.seconds_per_step, cancel != nullptr && cancel->load(), call);
+  res.statistics.backward_moves = options.model.allow_backward;
   if (res.status == Response::SUCCESS) {
     auto executable = std::make_shared<ExecutablePlan>();
     executable->map = std::shared_ptr<const GridMap>(map, &map->grid);  // shares the snapshot
     executable->instance = instance;
     executable->plan = result.plan;
     executable->lattice_step = result.lattice_step;
+    executable->allow_backward = options.model.allow_backward;
     executable->graphs = result.graphs;
     for (const auto& timeline : res.timelines) {
       auto& poses = executable->poses.emplace_back();

@@ -78,7 +78,7 @@ class Reader {
 const std::vector<std::string>& plannerParameterNames() {
   static const std::vector<std::string> names = {
       "backend",           "time_limit",         "max_time_limit",  "decomposition",     "decomposition_steps",
-      "threads",           "fallback",           "backend_parameters", "lattice_resolution", "refine", "compress",
+      "threads",           "fallback",           "backend_parameters", "lattice_resolution", "allow_backward", "refine", "compress",
       "busy_policy",       "max_map_cells",      "max_robots",      "max_memory_mb",     "occupied_threshold",
       "unknown_policy",    "position_tolerance", "heading_tolerance", "sweep_tolerance", "seconds_per_step",
       "map_frame",         "base_frame",         "tf_timeout",      "playback",          "planned_frame",
@@ -116,6 +116,7 @@ PlannerConfig loadPlannerConfig(const ros::NodeHandle& nh) {
   r.read("fallback", c.fallback);
   r.read("backend_parameters", c.backend_parameters);
   r.read("lattice_resolution", c.lattice_resolution);
+  r.read("allow_backward", c.allow_backward);
   r.read("busy_policy", c.busy_policy);
   r.read("max_map_cells", c.max_map_cells);
   r.read("max_robots", c.max_robots);

@@ -48,16 +48,18 @@ void addCheckCommand(CLI::App& app) {
   auto step = std::make_shared<int>(0);
   addProblemOptions(cmd, *options);
   cmd->add_option("--plan", *plan_path, "plan YAML file")->required();
-  cmd->add_flag("--backward", *backward, "backward moves are legal");
+  cmd->add_flag("--backward", *backward,
+                "backward moves are legal (also when the plan file says backward_moves: true, as solve writes it)");
   cmd->add_option("--lattice-step", *step,
                   "longest legal move in cells (default 0: the plan's longest straight move, so that a plan "
                   "made on a lattice checks; each move's sweep is checked cell by cell either way)")
       ->check(CLI::NonNegativeNumber);
   cmd->callback([options, plan_path, backward, step] {
     const Problem p = loadProblem(*options);
-    const Plan plan = loadPlan(*plan_path, p.instance);
+    bool planned_backward = false;
+    const Plan plan = loadPlan(*plan_path, p.instance, &planned_backward);
     ActionModel model;
-    model.allow_backward = *backward;
+    model.allow_backward = *backward || planned_backward;
     model.step = *step > 0 ? *step : std::max(1, longestMove(plan));
     const ValidationResult result = validatePlan(p.map, p.instance, plan, model);
     nlohmann::json j{{"valid", result.valid()}, {"agents", p.instance.robots.size()}};

@@ -86,7 +86,7 @@ Problem loadProblem(const ProblemOptions& options) {
     Instance instance = loadFleetTasks(map, options.fleet, options.tasks);
     for (Robot& robot : instance.robots) robot.footprint.sweep_tolerance = options.sweep_tolerance;
     checkRobotCount(static_cast<long long>(instance.robots.size()), options.limits);
-    return {std::move(map), std::move(instance)};
+    return {std::move(map), std::move(instance), true};
   }
   Instance instance = loadInstance(options.instance);
   const std::string map_path = options.map.empty() ? instance.map_file : options.map;
@@ -101,7 +101,9 @@ Problem loadProblem(const ProblemOptions& options) {
   for (Robot& robot : instance.robots) robot.footprint.sweep_tolerance = options.sweep_tolerance;
   checkRobotCount(static_cast<long long>(instance.robots.size()), options.limits);
   validateInstance(map, instance);
-  return {std::move(map), std::move(instance)};
+  const bool map_server = map_path.size() >= 5 && (map_path.compare(map_path.size() - 5, 5, ".yaml") == 0 ||
+                                                   map_path.compare(map_path.size() - 4, 4, ".yml") == 0);
+  return {std::move(map), std::move(instance), map_server};
 }
 
 void printJsonLine(const nlohmann::json& j) { std::cout << j.dump() << std::endl; }

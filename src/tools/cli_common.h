@@ -51,6 +51,8 @@ void applyBackendOptions(PlanningOptions& options, const std::vector<std::string
 struct Problem {
   GridMap map;
   Instance instance;
+  /// The map is a map_server map (a real map; the node's inputs), not a MovingAI benchmark map.
+  bool map_server = false;
 };
 
 /// Loads map and instance, picks the robots and validates them against the map (throws

@@ -83,6 +83,8 @@ void addSolveCommand(CLI::App& app) {
     bool no_compress = false;
     bool no_refine = false;
     bool one_chain = false;
+    bool backward = false;
+    bool forward_only = false;
     std::vector<std::string> backend_params;
   };
   auto o = std::make_shared<Options>();
@@ -109,6 +111,12 @@ void addSolveCommand(CLI::App& app) {
   cmd->add_flag("--no-refine", o->no_refine, "keep the merged paths (no replanning of single robots)");
   cmd->add_flag("--one-chain", o->one_chain,
                 "serial backends: plan every level around all earlier paths (no independent clusters)");
+  auto* backward = cmd->add_flag(
+      "--backward", o->backward,
+      "robots may also move backward (the default on map_server maps, as the node plans: real robots reverse)");
+  cmd->add_flag("--forward-only", o->forward_only,
+                "robots only move forward and turn in place (the default on MovingAI maps: the paper's model)")
+      ->excludes(backward);
   cmd->add_flag("--details", o->details, "add the solved subproblems (robot ids, status, time, delay) to the JSON");
   cmd->callback([o] {
     PlanningCall call;  // the time limit counts from here: loading the problem is part of it
@@ -121,15 +129,17 @@ void addSolveCommand(CLI::App& app) {
     options.refine = !o->no_refine;
     options.independent_clusters = !o->one_chain;
     options.limits = o->problem.limits;
+    options.model.allow_backward = o->backward || (!o->forward_only && p.map_server);
     const PlanningResult result = planFleet(p.map, p.instance, options, call);
 
     const int n = static_cast<int>(p.instance.robots.size());
     nlohmann::json j = resultJson(result, o->mode, o->steps, n, options.seed);
+    j["backward"] = options.model.allow_backward;
     if (o->details) j["subproblem_details"] = subproblemDetails(p.instance, result);
     if (result.success()) {
       j["soc"] = result.metrics.soc;
       j["makespan"] = result.metrics.makespan;
-      if (!o->out.empty()) savePlan(p.instance, result.plan, o->out);
+      if (!o->out.empty()) savePlan(p.instance, result.plan, o->out, options.model.allow_backward);
     } else {
       j["soc"] = nullptr;
       j["makespan"] = nullptr;

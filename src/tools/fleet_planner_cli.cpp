@@ -19,7 +19,9 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    return app.exit(e);
+    // --help and --version exit 0; a bad flag or value is bad input (CLI11's own codes vary).
+    const int code = app.exit(e);
+    return code == 0 ? 0 : fleet_planner::cli::kExitBadInput;
   } catch (const fleet_planner::InputError& e) {
     std::cerr << "error: " << e.what() << "\n";
     return fleet_planner::cli::kExitBadInput;

@@ -94,6 +94,23 @@ TEST(PlanIo, RoundTripsThroughAFile) {
   EXPECT_EQ(loadPlan(path, twoRobots()).paths, twoPaths().paths);
 }
 
+TEST(PlanIo, RecordsThatBackwardMovesWereAllowed) {
+  const std::string path = scratchPath("backward.yaml");
+  savePlan(twoRobots(), twoPaths(), path, /*backward_moves=*/true);
+  EXPECT_NE(planToYaml(twoRobots(), twoPaths(), true).find("\nbackward_moves: true\nrobots:\n"), std::string::npos);
+  bool backward = false;
+  EXPECT_EQ(loadPlan(path, twoRobots(), &backward).paths, twoPaths().paths);
+  EXPECT_TRUE(backward);
+  savePlan(twoRobots(), twoPaths(), path);
+  EXPECT_EQ(loadPlan(path, twoRobots(), &backward).paths, twoPaths().paths);
+  EXPECT_FALSE(backward);
+  const std::string bad = scratchFile("backward_bad.yaml",
+                                      "format: fleet_planner/plan/1\n"
+                                      "backward_moves: maybe\n"
+                                      "robots: []\n");
+  expectParseError([&] { loadPlan(bad, twoRobots()); }, bad, 2, "backward_moves must be true or false");
+}
+
 TEST(PlanIo, ReturnsPathsInInstanceOrderAndMetricsAreOptional) {
   const std::string path = scratchFile("reordered.yaml",
                                        "format: fleet_planner/plan/1\n"

@@ -33,6 +33,25 @@ class CliDefaultsTest(unittest.TestCase):
         self.assertEqual(j["fallback"], node["fallback"])
         self.assertEqual(j["mode"], "layered" if node["decomposition"] else "raw")
         self.assertEqual(j["steps"], "1234"[:node["decomposition_steps"]])
+        # A MovingAI map plans in the paper's model: forward moves and turns in place only.
+        self.assertFalse(j["backward"])
+
+    def test_the_node_inputs_plan_with_backward_moves_as_the_node_does(self):
+        with open(os.path.join(ROOT, "config", "planner.yaml")) as f:
+            node = yaml.safe_load(f)
+        inputs = ["--map", os.path.join(ROOT, "maps", "warehouse.yaml"),
+                  "--fleet", os.path.join(ROOT, "config", "demo_fleet.yaml"),
+                  "--tasks", os.path.join(ROOT, "config", "demo_tasks.yaml")]
+        for flags, backward in (([], node["allow_backward"]), (["--forward-only"], False)):
+            cli = os.environ["FLEET_PLANNER_CLI"]
+            run = subprocess.run([cli, "solve"] + inputs + flags, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                                 universal_newlines=True, timeout=120)
+            self.assertEqual(run.returncode, 0, run.stderr)
+            j = json.loads(run.stdout)
+            self.assertEqual((j["status"], j["valid"], j["backward"]), ("SUCCESS", True, backward), flags)
+        run = solve("--backward", "--forward-only")
+        self.assertEqual(run.returncode, 2, run.stdout)
+        self.assertIn("--forward-only", run.stderr)
 
     def test_fallback_none_and_backend_options(self):
         run = solve("--mode", "raw", "--backend", "la_cbs", "--fallback", "none",

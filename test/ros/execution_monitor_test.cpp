@@ -119,6 +119,7 @@ TEST(ExecutionMonitorLag, NobodyIsReleasedOntoARobotThatCountsAsGoneButIsNotQuit
   };
   ActionModel model;
   model.step = plan.lattice_step;
+  model.allow_backward = plan.allow_backward;
   const PlanCells cells(plan.instance, plan.plan, model);
   const StepDependencies deps = buildStepDependencies(cells);
   int i = -1, t = -1, o = -1, s = -1;

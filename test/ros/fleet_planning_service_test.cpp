@@ -38,7 +38,10 @@ class PlanningServiceTest : public ::testing::Test {
     ASSERT_EQ(response.timelines.size(), request.tasks.size());
     const GridMap map = convert(occupancyGrid(24, 12, kRes, kOx, kOy, {{8, 8}, {8, 9}, {15, 1}}), OccupancyPolicy{});
     const Instance instance = instanceOf(request, registry(), response, kRes);
-    const auto validation = validatePlan(map, instance, planOf(response));
+    ActionModel model;
+    model.allow_backward = response.statistics.backward_moves;  // the node's default: allowed
+    model.step = static_cast<int>(response.statistics.lattice_step);
+    const auto validation = validatePlan(map, instance, planOf(response), model);
     EXPECT_TRUE(validation.valid()) << validation.violation.message;
     for (std::size_t i = 0; i < request.tasks.size(); ++i) {
       const auto& states = response.timelines[i].states;

@@ -249,6 +249,8 @@ class PlanFleetRobustnessTest(unittest.TestCase):
         self.assertTrue(self.cli, "fleet_planner_cli not found")
         self.assertEqual(len(response.timelines), len(request.tasks))
         scenario, plan = {"robots": []}, {"format": "fleet_planner/plan/1", "robots": []}
+        # The node plans with backward moves by default (allow_backward); the checker is told.
+        plan["backward_moves"] = bool(response.statistics.backward_moves)
         for task_msg, timeline in zip(request.tasks, response.timelines):
             self.assertEqual(timeline.robot_id, task_msg.robot_id)
             first, last = timeline.states[0], timeline.states[-1]

@@ -13,7 +13,8 @@
 /// `soc` and `makespan` are planMetrics() of the paths and `cost` is pathCost() of the robot's
 /// path (-1 where a path does not end at its target). Robots are written in instance order;
 /// after its last state a robot stays there. `format` and `robots` are required, the metrics
-/// optional; other keys are errors.
+/// optional, and `backward_moves: true` (optional) says the plan was made with backward moves
+/// allowed; other keys are errors.
 #include <string>
 
 #include "fleet_planner/model/instance.h"
@@ -22,12 +23,13 @@
 namespace fleet_planner {
 
 /// The plan as YAML (see above). Throws InvalidInput if the plan does not have one non-empty
-/// path per robot of the instance.
-std::string planToYaml(const Instance& instance, const Plan& plan);
+/// path per robot of the instance. `backward_moves`: the plan was made with backward moves
+/// allowed (written as `backward_moves: true`, so that `check` validates it in that model).
+std::string planToYaml(const Instance& instance, const Plan& plan, bool backward_moves = false);
 
-/// Writes planToYaml(instance, plan) to `path`. Throws InvalidInput naming the path if it
-/// cannot be written.
-void savePlan(const Instance& instance, const Plan& plan, const std::string& path);
+/// Writes planToYaml(instance, plan, backward_moves) to `path`. Throws InvalidInput naming the
+/// path if it cannot be written.
+void savePlan(const Instance& instance, const Plan& plan, const std::string& path, bool backward_moves = false);
 
 /// Reads a plan for `instance`: paths are matched to robots by id and returned in instance
 /// order. Positions are not checked against any map. Throws ParseError(path, line, reason) for
@@ -35,6 +37,7 @@ void savePlan(const Instance& instance, const Plan& plan, const std::string& pat
 /// robot of the instance or appears twice, a robot of the instance without a path, an empty
 /// path, a state that is not [x, y, heading] with integers and heading 0..3, and a `soc`,
 /// `makespan` or `cost` that is present but differs from the one the paths give.
-Plan loadPlan(const std::string& path, const Instance& instance);
+/// `backward_moves`, if given, is set to the file's optional `backward_moves` (false without it).
+Plan loadPlan(const std::string& path, const Instance& instance, bool* backward_moves = nullptr);
 
 }  // namespace fleet_planner

@@ -48,6 +48,7 @@ struct ExecutablePlan {
   Instance instance;
   Plan plan;
   int lattice_step = 1;
+  bool allow_backward = false;  ///< the plan may move robots backward
   /// The state graphs the plan was made on (its lattice): re-planning reuses them.
   std::shared_ptr<const FleetGraphs> graphs;
   /// Per robot, per state: the map-frame pose (the timelines' states: true start and goal yaws).

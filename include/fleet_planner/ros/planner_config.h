@@ -29,6 +29,9 @@ struct PlannerConfig {
   /// The planning lattice's step in metres (rounded to map cells, at least 1); 0: the fleet's
   /// default (a third of the narrowest robot's width). See planning/lattice.h.
   double lattice_resolution = 0.0;
+  /// Robots may also move backward one lattice step (ActionModel::allow_backward). Real robots
+  /// reverse; without it a robot facing a wall or another robot with no room to turn is stuck.
+  bool allow_backward = true;
   /// Options of the backends by name: {backend: {option: value}} (backend_parameters.h).
   BackendParameters backend_parameters;
   bool refine = true;                ///< replan delayed robots after merging (plan_refinement.h)
