@@ -21,7 +21,7 @@ double since(std::chrono::steady_clock::time_point t) {
 // short is still legal, only coarser), or the whole fleet as one (raw).
 std::vector<SolvedSubproblem> decomposeInto(const Instance& instance, const FleetGraphs& graphs,
                                             const LayeredOptions& options, const Deadline& deadline,
-                                            Decomposition& decomposition) {
+                                            Decomposition& decomposition, std::string& as_one) {
   const int n = static_cast<int>(instance.robots.size());
   std::vector<SolvedSubproblem> order;
   if (options.decompose && n > 0) {
@@ -30,18 +30,26 @@ std::vector<SolvedSubproblem> decomposeInto(const Instance& instance, const Flee
     d.threads = options.threads;
     decomposition =
         decompose(instance, graphs, d, deadline.within(deadline.remaining() * options.budget.decomposition_share));
-    for (const auto& s : decomposition.subproblems) {
-      SolvedSubproblem solved;
-      solved.robots = s.robots;
-      solved.cluster = s.cluster;
-      solved.level = s.level;
-      order.push_back(solved);
+    const std::size_t largest = static_cast<std::size_t>(decomposition.largest());
+    if (decomposition.subproblems.size() > 1 && largest >= options.budget.whole_fleet_min_robots &&
+        largest >= options.budget.whole_fleet_share * n) {
+      as_one = "the decomposition's largest subproblem holds " + std::to_string(largest) + " of " +
+               std::to_string(n) + " robots: the fleet is solved as one subproblem";
+    } else {
+      for (const auto& s : decomposition.subproblems) {
+        SolvedSubproblem solved;
+        solved.robots = s.robots;
+        solved.cluster = s.cluster;
+        solved.level = s.level;
+        order.push_back(solved);
+      }
+      return order;
     }
-    return order;
   }
   SolvedSubproblem all;
   for (int i = 0; i < n; ++i) all.robots.push_back(i);
   order.push_back(all);
+  if (!as_one.empty()) return order;  // the decomposition stays reported as computed
   DecompositionSubproblem whole;
   whole.robots = all.robots;
   decomposition.subproblems.push_back(whole);
@@ -86,7 +94,7 @@ LayeredResult planLayered(const GridMap& map, const Instance& instance, const Fl
       return result;
     }
   }
-  std::vector<SolvedSubproblem> order = decomposeInto(instance, graphs, options, deadline, result.decomposition);
+  std::vector<SolvedSubproblem> order = decomposeInto(instance, graphs, options, deadline, result.decomposition, result.solved_as_one);
   result.decompose_s = since(t);
 
   // 2. Solve; 3. merge.

@@ -337,6 +337,40 @@ TEST(LayeredPlanner, RawModeIsOneSubproblem) {
   EXPECT_EQ(r.metrics.soc, 14);
 }
 
+// A decomposition whose largest subproblem holds at least whole_fleet_share of the robots (and
+// whole_fleet_min_robots) is set aside: the fleet is one subproblem, the decomposition stays
+// reported as computed, the answer says why, and the plan is valid.
+TEST(LayeredPlanner, ADominantSubproblemMakesTheFleetOneSubproblem) {
+  for (std::uint64_t seed = 1; seed <= 40; ++seed) {
+    const GridMap map = randomMap(seed);
+    const std::optional<Instance> fleet = test::randomFleet(map, 6, seed);
+    if (!fleet) continue;
+    const FleetGraphs graphs(map, footprintsOf(*fleet));
+    LayeredOptions o;
+    o.backend = "la_lns";
+    o.budget.whole_fleet_share = 2.0;  // never
+    const LayeredResult split = planLayered(map, *fleet, graphs, o, Deadline::in(5.0));
+    if (!split.success() || split.decomposition.subproblems.size() < 2) continue;
+    const int largest = split.decomposition.largest();
+    EXPECT_TRUE(split.solved_as_one.empty());
+    o.budget.whole_fleet_share = static_cast<double>(largest) / 6.0;
+    o.budget.whole_fleet_min_robots = static_cast<std::size_t>(largest) + 1;  // one short: split
+    EXPECT_EQ(planLayered(map, *fleet, graphs, o, Deadline::in(5.0)).subproblems.size(), split.subproblems.size());
+    o.budget.whole_fleet_min_robots = static_cast<std::size_t>(largest);
+    const LayeredResult one = planLayered(map, *fleet, graphs, o, Deadline::in(5.0));
+    ASSERT_TRUE(one.success()) << "seed " << seed << ": " << one.reason;
+    EXPECT_EQ(one.subproblems.size(), 1u);
+    EXPECT_EQ(one.subproblems[0].robots.size(), 6u);
+    EXPECT_EQ(one.decomposition.subproblems.size(), split.decomposition.subproblems.size());
+    EXPECT_NE(one.solved_as_one.find(std::to_string(largest) + " of 6 robots"), std::string::npos)
+        << one.solved_as_one;
+    const ValidationResult v = validatePlan(map, *fleet, one.plan);
+    EXPECT_TRUE(v.valid()) << "seed " << seed << ": " << v.violation.message;
+    return;
+  }
+  FAIL() << "no seed gave a decomposed, solved fleet";
+}
+
 TEST(LayeredPlanner, UnreachableTargetIsInfeasibleInBothModes) {
   const GridMap map = test::mapFromRows({"..@..", "..@.."});
   Instance in;

@@ -63,6 +63,9 @@ struct LayeredResult {
   std::vector<std::string> step_asides;       ///< one line per subproblem solved again with robots stepping aside
   RefinementStats refinement;                 ///< of the merged plan
   CompressionStats compression;               ///< of the refined plan
+  /// Why the decomposition was set aside and the fleet solved as one subproblem
+  /// (TimeBudget::whole_fleet_share); empty when it was not.
+  std::string solved_as_one;
   double decompose_s = 0.0;
   double solve_s = 0.0;
   bool success() const { return status == SolveStatus::Success; }

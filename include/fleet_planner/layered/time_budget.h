@@ -43,6 +43,12 @@ struct TimeBudget {
   std::size_t step_aside_plan_max_robots = 8;
   double step_aside_plan_share = 0.1;
   double step_aside_plan_max_s = 2.0;
+  /// A decomposition whose largest subproblem holds at least this share of the robots, and at
+  /// least whole_fleet_min_robots of them, is set aside and the fleet solved as one subproblem:
+  /// the other levels would be planned around (or delayed behind) that packed subproblem's long
+  /// plan, which costs more than planning them in it. Above 1: never.
+  double whole_fleet_share = 0.5;
+  std::size_t whole_fleet_min_robots = 16;
 };
 
 }  // namespace fleet_planner
