@@ -25,7 +25,7 @@ import time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 REPO = os.path.normpath(os.path.join(HERE, ".."))
-COLUMNS = ["map", "robots", "seed", "config", "status", "valid", "lattice_step", "time_s", "soc", "soc_cells",
+COLUMNS = ["map", "robots", "seed", "config", "status", "valid", "lattice_step", "backward", "time_s", "soc", "soc_cells",
            "makespan", "lattice_notes", "reason"]
 
 
@@ -41,6 +41,7 @@ def solve(cli, scenario, extra, time_limit):
         return {"status": "ERROR", "reason": (run.stderr or run.stdout).strip()[:300], "time_s": wall}
     soc = j.get("soc")
     return {"status": j["status"], "valid": j.get("valid"), "lattice_step": j.get("lattice_step"),
+            "backward": j.get("backward"),
             "time_s": j.get("time_s", wall), "soc": soc, "makespan": j.get("makespan"),
             "soc_cells": soc * j.get("lattice_step", 1) if soc is not None else None,
             "lattice_notes": " | ".join(j.get("lattice_notes", []))[:300], "reason": (j.get("reason") or "")[:300]}
