@@ -4,6 +4,7 @@ options by name. Needs $FLEET_PLANNER_CLI (ctest sets it)."""
 import json
 import os
 import subprocess
+import tempfile
 import unittest
 
 import yaml
@@ -49,6 +50,27 @@ class CliDefaultsTest(unittest.TestCase):
             self.assertEqual(run.returncode, 0, run.stderr)
             j = json.loads(run.stdout)
             self.assertEqual((j["status"], j["valid"], j["backward"]), ("SUCCESS", True, backward), flags)
+        # The plan file says backward moves were allowed, and `check` validates it so; without
+        # that line the backward moves are illegal (the demo's plan backs forklift_2 out at its
+        # first step).
+        with tempfile.TemporaryDirectory() as folder:
+            plan = os.path.join(folder, "plan.yaml")
+            cli = os.environ["FLEET_PLANNER_CLI"]
+            run = subprocess.run([cli, "solve"] + inputs + ["--out", plan], stdout=subprocess.PIPE,
+                                 stderr=subprocess.PIPE, universal_newlines=True, timeout=120)
+            self.assertEqual(run.returncode, 0, run.stderr)
+            with open(plan) as f:
+                text = f.read()
+            self.assertIn("\nbackward_moves: true\n", text)
+            check = [cli, "check"] + inputs + ["--plan", plan]
+            run = subprocess.run(check, stdout=subprocess.PIPE, universal_newlines=True, timeout=120)
+            self.assertEqual(run.returncode, 0, run.stdout)
+            self.assertTrue(json.loads(run.stdout)["valid"])
+            with open(plan, "w") as f:
+                f.write(text.replace("backward_moves: true\n", ""))
+            run = subprocess.run(check, stdout=subprocess.PIPE, universal_newlines=True, timeout=120)
+            self.assertEqual(run.returncode, 1, run.stdout)
+            self.assertEqual(json.loads(run.stdout)["violation"], "illegal action")
         run = solve("--backward", "--forward-only")
         self.assertEqual(run.returncode, 2, run.stdout)
         self.assertIn("--forward-only", run.stderr)
