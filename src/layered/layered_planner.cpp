@@ -18,7 +18,9 @@ double since(std::chrono::steady_clock::time_point t) {
 }
 
 // The subproblems to solve, in order: the decomposition's (at most its share of the time: one cut
-// short is still legal, only coarser), or the whole fleet as one (raw).
+// short is still legal, only coarser), or the whole fleet as one: raw, or a decomposition with a
+// dominant subproblem (TimeBudget::whole_fleet_share; `as_one` says why, and the decomposition
+// stays as computed).
 std::vector<SolvedSubproblem> decomposeInto(const Instance& instance, const FleetGraphs& graphs,
                                             const LayeredOptions& options, const Deadline& deadline,
                                             Decomposition& decomposition, std::string& as_one) {
@@ -94,7 +96,8 @@ LayeredResult planLayered(const GridMap& map, const Instance& instance, const Fl
       return result;
     }
   }
-  std::vector<SolvedSubproblem> order = decomposeInto(instance, graphs, options, deadline, result.decomposition, result.solved_as_one);
+  std::vector<SolvedSubproblem> order =
+      decomposeInto(instance, graphs, options, deadline, result.decomposition, result.solved_as_one);
   result.decompose_s = since(t);
 
   // 2. Solve; 3. merge.

@@ -73,7 +73,7 @@ std::string dumpInstance(const StressOptions& o, int index, const nlohmann::json
       << "): " << c.map_kind << " " << c.map.width() << " x " << c.map.height() << ", "
       << c.instance.robots.size() << " robots"
       << (c.model.allow_backward
-              ? ", backward moves allowed (solve has no flag for them: use the stress command)"
+              ? ", backward moves allowed (solve --backward)"
               : "")
       << "\n\nviolations:\n";
   for (const auto& v : violations) txt << "  " << v.dump() << "\n";
