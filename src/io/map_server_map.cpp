@@ -153,8 +153,10 @@ GridMap loadMapServerMap(const std::string& yaml_path, const MapServerOptions& o
   return io::mapServerGrid(yaml, io::readPgm(yaml.image, &options.limits), options, yaml_path);
 }
 
+bool isMapServerMapPath(const std::string& path) { return io::hasYamlExtension(path); }
+
 GridMap loadMap(const std::string& path, const MapServerOptions& options) {
-  if (io::hasYamlExtension(path)) return loadMapServerMap(path, options);
+  if (isMapServerMapPath(path)) return loadMapServerMap(path, options);
   return loadMovingAiMap(path, options.limits);
 }
 

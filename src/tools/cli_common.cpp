@@ -101,9 +101,7 @@ Problem loadProblem(const ProblemOptions& options) {
   for (Robot& robot : instance.robots) robot.footprint.sweep_tolerance = options.sweep_tolerance;
   checkRobotCount(static_cast<long long>(instance.robots.size()), options.limits);
   validateInstance(map, instance);
-  const bool map_server = map_path.size() >= 5 && (map_path.compare(map_path.size() - 5, 5, ".yaml") == 0 ||
-                                                   map_path.compare(map_path.size() - 4, 4, ".yml") == 0);
-  return {std::move(map), std::move(instance), map_server};
+  return {std::move(map), std::move(instance), isMapServerMapPath(map_path)};
 }
 
 void printJsonLine(const nlohmann::json& j) { std::cout << j.dump() << std::endl; }

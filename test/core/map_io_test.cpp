@@ -248,6 +248,11 @@ TEST(MapServerMapIo, LoadsSixteenBitP5) {
 TEST(MapServerMapIo, LoadMapDispatchesOnTheExtension) {
   EXPECT_EQ(loadMap(dataPath("map_server_p2.yaml")).width(), 4);
   EXPECT_EQ(loadMap(dataPath("movingai_5x4_all_chars.map")).width(), 5);
+  // The CLI's defaults (backward moves) follow the same rule.
+  EXPECT_TRUE(isMapServerMapPath("maps/warehouse.yaml"));
+  EXPECT_TRUE(isMapServerMapPath("/x/HOUSE.YML"));
+  EXPECT_FALSE(isMapServerMapPath("maze-128-128-10.map"));
+  EXPECT_FALSE(isMapServerMapPath("yaml"));
 }
 
 TEST(MapServerMapIo, RejectsBadImages) {

@@ -55,8 +55,11 @@ struct MapServerOptions {
 /// line 0 for binary data).
 GridMap loadMapServerMap(const std::string& yaml_path, const MapServerOptions& options = {});
 
-/// Reads either kind of map: a path ending in `.yaml` or `.yml` with loadMapServerMap, anything
-/// else with loadMovingAiMap.
+/// A path that loadMap reads as a map_server map: ending in `.yaml` or `.yml` (any case).
+bool isMapServerMapPath(const std::string& path);
+
+/// Reads either kind of map: a map_server map (isMapServerMapPath) with loadMapServerMap,
+/// anything else with loadMovingAiMap.
 GridMap loadMap(const std::string& path, const MapServerOptions& options = {});
 
 }  // namespace fleet_planner
