@@ -51,10 +51,13 @@ Path cheaperPath(const Instance& instance, const FleetGraphs& graphs, const std:
   if (lower_bound >= cost) return {};
   // Safe intervals: a wait is one node, so a path that waits for others to pass costs a few
   // expansions, and the bound (arrive before `cost`) ends the search soon when there is no
-  // cheaper path, where space-time A* must still try every step of every wait.
+  // cheaper path, where space-time A* must still try every step of every wait. Any cheaper
+  // path improves the plan: a weighted heuristic finds one in fewer expansions than proving
+  // the cheapest, and the bound (on the unweighted one) still keeps only cheaper paths.
   const SoftPathTable nobody(space);  // the others are the space's moving obstacles
   const SafeIntervalResult found =
-      safeIntervalSearch(space, 0, nobody, deadline, options.max_nodes_per_search, cost - 1);
+      safeIntervalSearch(space, 0, nobody, deadline, options.max_nodes_per_search, cost - 1,
+                         options.heuristic_weight);
   expansions += found.expansions;
   Path path;
   if (found.outcome != SafeIntervalResult::Outcome::Found) return path;

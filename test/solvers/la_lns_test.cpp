@@ -278,6 +278,42 @@ TEST(SafeIntervalSearch, ArrivalBoundKeepsPassesOverTheTargetAfterIt) {
   }
 }
 
+// A robot of another subproblem stands on the mover's target until step 60: with a loose bound
+// on the arrival (refinement's "cheaper than now"), the weighted search finds a path within
+// the bound after fewer expansions than the earliest-arrival search, which first tries every
+// state it could reach and wait in before step 60.
+TEST(SafeIntervalSearch, WeightedSearchFindsAPathWithinTheBoundSooner) {
+  const World w(freeMap(24, 24), {dot("sitter", {20, 20, 0}, {21, 20, 0}), dot("mover", {0, 0, 0}, {20, 20, 0})});
+  Subproblem sub = allRobots(w);
+  sub.robots = {1};
+  MovingObstacle m;
+  m.robot = 0;
+  m.path.assign(60, GridPose{20, 20, 0});
+  m.path.push_back(GridPose{21, 20, 0});
+  sub.moving.push_back(m);
+  const SearchSpace space(sub);
+  const SoftPathTable table(space);
+  const int bound = 200;
+  const SafeIntervalResult earliest = safeIntervalSearch(space, 0, table, Deadline::in(5.0), 100000, bound);
+  const SafeIntervalResult weighted = safeIntervalSearch(space, 0, table, Deadline::in(5.0), 100000, bound, 2.0);
+  ASSERT_EQ(earliest.outcome, SafeIntervalResult::Outcome::Found);
+  ASSERT_EQ(weighted.outcome, SafeIntervalResult::Outcome::Found);
+  EXPECT_LE(static_cast<int>(weighted.path.size()) - 1, bound);
+  EXPECT_GE(weighted.path.size(), earliest.path.size());
+  EXPECT_LT(weighted.expansions * 2, earliest.expansions);
+  Plan plan;
+  plan.paths.push_back(m.path);
+  Path p;
+  for (StateId s : weighted.path) p.push_back(space.graph(0).pose(s));
+  plan.paths.push_back(p);
+  const ValidationResult v = validatePlan(w.map, w.instance, plan);
+  EXPECT_TRUE(v.valid()) << v.violation.message;
+  // A bound below the earliest arrival still answers NoPath.
+  const int first = static_cast<int>(earliest.path.size()) - 1;
+  EXPECT_EQ(safeIntervalSearch(space, 0, table, Deadline::in(5.0), 100000, first - 1, 2.0).outcome,
+            SafeIntervalResult::Outcome::NoPath);
+}
+
 TEST(SafeIntervalSearch, NoCollisionFreePathIsNoPath) {
   // The runner parks for good on the only way to the waiter's target.
   const World w(freeMap(7, 1),

@@ -39,6 +39,9 @@ struct RefinementOptions {
   long long expansions_per_robot = 30'000;
   long long max_expansions = 300'000;  ///< and at most this many in all
   long long max_nodes_per_search = 50'000;  ///< expansions of a single search; LA-CBS: its low-level nodes
+  /// A single search orders its nodes by arrival + weight x distance to the target: the first
+  /// path it finds arrives before the robot's current arrival, not necessarily at the earliest.
+  double heuristic_weight = 2.0;
   int group_size = 4;                         ///< robots per group search; < 2: none
   long long group_nodes = 64;                 ///< LA-CBS constraint-tree expansions per group
   long long group_expansions = 400'000;       ///< LA-CBS low-level expansions per group (at most what is left)

@@ -214,7 +214,7 @@ int stepsBetween(const StateGraph& g, StateId s, StateId goal) {
 SafeIntervalResult searchBetween(const SearchSpace& space, int a, const SoftPathTable& others,
                                  StateId from, int t0, StateId goal, int t1, int max_delay,
                                  const Deadline& deadline, long long max_expansions,
-                                 int max_arrival = kNever) {
+                                 int max_arrival = kNever, double weight = 1.0) {
   SafeIntervalResult result;
   const StateGraph& g = space.graph(a);
   if (space.distance(a, from) < 0) return result;
@@ -243,8 +243,9 @@ SafeIntervalResult searchBetween(const SearchSpace& space, int a, const SoftPath
   };
   std::priority_queue<int, std::vector<int>, decltype(worse)> open(worse);
   auto push = [&](StateId s, int interval, int arrival, int parent) {
-    const int f = arrival + heuristic(s);
-    if (f > (forever ? max_arrival : t1 + max_delay)) return;  // cannot reach the goal in time
+    const int h = heuristic(s);
+    if (arrival + h > (forever ? max_arrival : t1 + max_delay)) return;  // cannot reach the goal in time
+    const int f = weight == 1.0 ? arrival + h : arrival + static_cast<int>(weight * h);
     const std::uint64_t k = key(s, interval);
     const int* known = best.find(k);
     if (known != nullptr && nodes[*known].g <= arrival) return;
@@ -316,9 +317,9 @@ SafeIntervalResult searchBetween(const SearchSpace& space, int a, const SoftPath
 
 SafeIntervalResult safeIntervalSearch(const SearchSpace& space, int a, const SoftPathTable& others,
                                       const Deadline& deadline, long long max_expansions,
-                                      int max_arrival) {
+                                      int max_arrival, double weight) {
   return searchBetween(space, a, others, space.start(a), 0, space.target(a), kNever, 0, deadline,
-                       max_expansions, max_arrival);
+                       max_expansions, max_arrival, weight);
 }
 
 SafeIntervalResult safeIntervalSegment(const SearchSpace& space, int a,

@@ -25,10 +25,13 @@ struct SafeIntervalResult {
 /// Earliest-arriving collision-free path of agent a (its own path in `others`, if any, is
 /// ignored), after at most `max_expansions` expansions. Only arrivals at the target by step
 /// `max_arrival` are searched: NoPath then means none arrives by then (a bound prunes the
-/// search early when the caller wants only a path cheaper than one it has).
+/// search early when the caller wants only a path cheaper than one it has). With `weight` > 1
+/// nodes are ordered by arrival + weight x distance: a path within the bound, found sooner,
+/// not always the earliest.
 SafeIntervalResult safeIntervalSearch(const SearchSpace& space, int a, const SoftPathTable& others,
                                       const Deadline& deadline, long long max_expansions,
-                                      int max_arrival = SoftPathTable::kNever);
+                                      int max_arrival = SoftPathTable::kNever,
+                                      double weight = 1.0);
 
 /// A collision-free piece of agent a's way, to splice into its path: from state `from` at step
 /// t0 to state `to`, reached by step t1 and held until t1, or reached at a step t1 + d with
