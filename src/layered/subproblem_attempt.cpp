@@ -36,6 +36,8 @@ void Solving::solveOne(std::size_t k) {
   sub.graphs = &graphs_;
   sub.robots = order_[k].robots;
   sub.seed = options_.seed + order_[k].seed_offset;
+  // Alone (the whole fleet as one subproblem), it has every thread to itself.
+  if (order_.size() == 1) sub.threads = std::max(1, options_.threads);
   const std::vector<int>& aside = order_[k].stepping_aside;
   sub.robots.insert(sub.robots.end(), aside.begin(), aside.end());
   for (std::size_t m = 0; m < order_.size(); ++m) {

@@ -107,6 +107,40 @@ TEST(ParkingPlan, TakesNoPocketThatARobotParkedForGoodCutsOffFromHome) {
   EXPECT_TRUE(v.valid()) << v.violation.message;
 }
 
+// Two robots driving east and two driving west along a corridor with two pockets: the orders
+// of turns cost different expansions. fastestParkingPlan keeps the plan of the order that got
+// everybody home in fewest (ties: the earlier), as the plans made alone in each order show, and
+// gives the same plan and count with one thread or two.
+TEST(ParkingPlan, TheFastestOrderIsKeptWhateverTheThreads) {
+  const World w(mapFromRows({"................", "@@@.@@@@@@@@.@@@"}),
+                {dot("a", {0, 0, 0}, {14, 0, 0}), dot("b", {6, 0, 0}, {15, 0, 0}),
+                 dot("c", {15, 0, 2}, {1, 0, 2}), dot("d", {10, 0, 2}, {5, 0, 2})});
+  const Subproblem sub = allRobots(w);
+  const SearchSpace space(sub);
+  const std::vector<std::vector<int>> orders = {{0, 1, 2, 3}, {3, 2, 1, 0}};
+  std::vector<std::optional<ParkingPlan>> alone;
+  std::vector<long long> cost;
+  int winner = -1;
+  for (std::size_t i = 0; i < orders.size(); ++i) {
+    long long e = 0;
+    alone.push_back(parkingPlan(space, orders[i], Deadline::in(5.0), ParkingPlanOptions{}, e));
+    ASSERT_TRUE(alone.back().has_value());
+    cost.push_back(e);
+    if (alone.back()->robots_home == 4 && (winner < 0 || e < cost[winner])) winner = static_cast<int>(i);
+  }
+  ASSERT_EQ(winner, 1) << "the world no longer tells the orders apart: " << cost[0] << " vs " << cost[1];
+  for (int threads : {1, 2}) {
+    long long expansions = 0;
+    const auto plan = fastestParkingPlan(space, orders, Deadline::in(5.0), ParkingPlanOptions{}, threads, expansions);
+    ASSERT_TRUE(plan.has_value()) << threads << " threads";
+    EXPECT_EQ(plan->order, winner) << threads << " threads";
+    EXPECT_EQ(plan->paths, alone[winner]->paths) << threads << " threads";
+    EXPECT_EQ(expansions, 2 * cost[winner]) << threads << " threads: the other order stops at the winner's count";
+    const ValidationResult v = validateStatePaths(w, sub, space, plan->paths);
+    EXPECT_TRUE(v.valid()) << violationName(v.violation.kind);
+  }
+}
+
 TEST(ParkingPlan, IsLaLnsFirstPlan) {
   const World w = corridorWorld();
   Subproblem sub = allRobots(w);

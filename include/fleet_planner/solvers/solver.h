@@ -65,6 +65,9 @@ struct Subproblem {
   /// a stall with every agent replanned, a count of repairs, so the outcome does not depend on
   /// the machine). A question, not a flag: the answer costs a search per robot.
   std::function<bool()> may_give_up;
+  /// Threads the backend may use for this subproblem (LA-LNS: its parking plans' orders at
+  /// once); the answer does not depend on it.
+  int threads = 1;
 };
 
 /// ResourceLimit: the deadline's memory guard tripped, or a search's tables would not fit in

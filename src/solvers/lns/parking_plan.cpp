@@ -2,9 +2,14 @@
 #include "fleet_planner/solvers/lns/parking_plan.h"
 
 #include <algorithm>
+#include <atomic>
+#include <climits>
 #include <deque>
+#include <exception>
 #include <functional>
+#include <memory>
 #include <queue>
+#include <thread>
 
 #include "fleet_planner/model/action.h"
 #include "fleet_planner/solvers/lns/pocket_repair.h"
@@ -17,10 +22,14 @@ namespace {
 
 class Parking {
  public:
-  Parking(const SearchSpace& space, const Deadline& deadline, const ParkingPlanOptions& options)
+  // `beaten(spent)`: another order has already done better than this one can (see
+  // fastestParkingPlan); the plan then stops where it is.
+  Parking(const SearchSpace& space, const Deadline& deadline, const ParkingPlanOptions& options,
+          std::function<bool(long long)> beaten = {})
       : space_(space),
         deadline_(deadline),
         options_(options),
+        beaten_(std::move(beaten)),
         n_(space.numAgents()),
         table_(space),
         paths_(n_),
@@ -35,36 +44,53 @@ class Parking {
   }
 
   std::optional<ParkingPlan> run(const std::vector<int>& order) {
+    start(order);
+    while (turn()) {
+    }
+    return finish();
+  }
+
+  // Robots take their turns in `order`.
+  void start(const std::vector<int>& order) {
     for (int a : order) {
       if (space_.start(a) != space_.target(a)) enqueue(a);
     }
-    std::vector<int> failed(n_, 0);
-    while (!queue_.empty() && !outOfBudget()) {
-      const int a = queue_.front();
-      queue_.pop_front();
-      queued_[a] = 0;
-      // Its way through fewest standing robots: if it meets none, a safe interval search
-      // drives it home (around the robots that still move); otherwise, or if that fails, the
-      // robots on it drive into pockets off it first.
-      int blocked_steps = 0;
-      const StatePath through = cheapestWay(
-          a, paths_[a].back(), [&](StateId s) { return s == space_.target(a); }, true, nullptr,
-          &blocked_steps);
-      if (blocked_steps == 0 && driveTo(a, space_.target(a))) continue;
-      // Given up: it stays where it stands (others may still push it).
-      if (++failed[a] > options_.max_failed_turns || through.empty()) continue;
-      std::vector<char> way;
-      markWay(space_, a, through, way);
-      std::vector<char> busy(n_, 0);
-      busy[a] = 1;
-      const int pushed = clear(way, busy, options_.push_depth);
-      if (pushed > 0) {
-        queue_.push_front(a);
-      } else {
-        queue_.push_back(a);
-      }
-      queued_[a] = 1;
+    failed_.assign(n_, 0);
+  }
+
+  // The next robot's turn; false (nothing done) once every robot is home or given up, or the
+  // budget, the deadline or a better order (`beaten`) has ended the plan.
+  bool turn() {
+    if (queue_.empty() || outOfBudget()) return false;
+    const int a = queue_.front();
+    queue_.pop_front();
+    queued_[a] = 0;
+    // Its way through fewest standing robots: if it meets none, a safe interval search
+    // drives it home (around the robots that still move); otherwise, or if that fails, the
+    // robots on it drive into pockets off it first.
+    int blocked_steps = 0;
+    const StatePath through = cheapestWay(
+        a, paths_[a].back(), [&](StateId s) { return s == space_.target(a); }, true, nullptr,
+        &blocked_steps);
+    if (blocked_steps == 0 && driveTo(a, space_.target(a))) return true;
+    // Given up: it stays where it stands (others may still push it).
+    if (++failed_[a] > options_.max_failed_turns || through.empty()) return true;
+    std::vector<char> way;
+    markWay(space_, a, through, way);
+    std::vector<char> busy(n_, 0);
+    busy[a] = 1;
+    const int pushed = clear(way, busy, options_.push_depth);
+    if (pushed > 0) {
+      queue_.push_front(a);
+    } else {
+      queue_.push_back(a);
     }
+    queued_[a] = 1;
+    return true;
+  }
+
+  // The plan as far as it got; none if it has a conflict (a defect).
+  std::optional<ParkingPlan> finish() {
     if (firstConflict(space_, paths_)) return std::nullopt;
     ParkingPlan plan;
     plan.home.assign(n_, 0);
@@ -77,9 +103,13 @@ class Parking {
   }
 
   long long spent() const { return spent_; }
+  bool gaveWay() const { return gave_way_; }
 
  private:
-  bool outOfBudget() const { return deadline_.expired() || spent_ >= options_.max_expansions; }
+  bool outOfBudget() const {
+    if (beaten_ && !gave_way_ && beaten_(spent_)) gave_way_ = true;
+    return gave_way_ || deadline_.expired() || spent_ >= options_.max_expansions;
+  }
   void enqueue(int a) {
     if (queued_[a]) return;
     queue_.push_back(a);
@@ -283,11 +313,14 @@ class Parking {
   const SearchSpace& space_;
   const Deadline& deadline_;
   const ParkingPlanOptions& options_;
+  const std::function<bool(long long)> beaten_;
+  mutable bool gave_way_ = false;
   const int n_;
   SoftPathTable table_;
   std::vector<StatePath> paths_;
   std::deque<int> queue_;
   std::vector<char> queued_;
+  std::vector<int> failed_;  // turns without a path home, per agent
   std::vector<std::vector<char>> reaches_home_;
   PocketRepairOptions pocket_options_;
   long long spent_ = 0;
@@ -306,4 +339,89 @@ std::optional<ParkingPlan> parkingPlan(const SearchSpace& space, const std::vect
   return plan;
 }
 
+std::optional<ParkingPlan> fastestParkingPlan(const SearchSpace& space,
+                                              const std::vector<std::vector<int>>& orders,
+                                              const Deadline& deadline,
+                                              const ParkingPlanOptions& options, int threads,
+                                              long long& expansions) {
+  const int k = static_cast<int>(orders.size());
+  if (k == 0) return std::nullopt;
+  constexpr long long kNotHome = LLONG_MAX;
+  // Expansions at which order i got every agent home (kNotHome: not, or not yet).
+  std::vector<std::atomic<long long>> home(k);
+  for (auto& h : home) h.store(kNotHome);
+  std::vector<std::optional<ParkingPlan>> plans(k);
+  std::vector<long long> spent(k, 0);
+  std::vector<std::exception_ptr> failures(k);
+  // Order i, having spent `used`, ends with more than order j did (or as many, j first).
+  auto beaten = [&](int i, long long used) {
+    for (int j = 0; j < k; ++j) {
+      const long long e = j == i ? kNotHome : home[j].load();
+      if (e != kNotHome && (used > e || (used == e && j < i))) return true;
+    }
+    return false;
+  };
+  std::vector<std::unique_ptr<Parking>> parkings(k);
+  for (int i = 0; i < k; ++i) {
+    parkings[i] = std::make_unique<Parking>(space, deadline, options,
+                                            [&, i](long long used) { return beaten(i, used); });
+    parkings[i]->start(orders[i]);
+  }
+  auto end = [&](int i) {
+    plans[i] = parkings[i]->finish();
+    spent[i] = parkings[i]->spent();
+    if (plans[i] && !parkings[i]->gaveWay() && plans[i]->robots_home == space.numAgents())
+      home[i] = spent[i];
+  };
+  if (threads >= 2 && k >= 2) {
+    // Orders 0, lanes, 2 x lanes, ... on this thread, the others on helpers.
+    const int lanes = std::min(threads, k);
+    auto lane = [&](int first) {
+      for (int i = first; i < k; i += lanes) {
+        try {
+          while (parkings[i]->turn()) {
+          }
+          end(i);
+        } catch (...) {
+          failures[i] = std::current_exception();
+        }
+      }
+    };
+    std::vector<std::thread> helpers;
+    for (int l = 1; l < lanes; ++l) helpers.emplace_back(lane, l);
+    lane(0);
+    for (std::thread& t : helpers) t.join();
+    for (const std::exception_ptr& e : failures) {
+      if (e) std::rethrow_exception(e);
+    }
+  } else {
+    // One thread: the order that has spent least takes the next turn (ties: the earlier), so
+    // that the orders advance together and the first to get everybody home ends the others.
+    std::vector<char> running(k, 1);
+    while (true) {
+      int next = -1;
+      for (int i = 0; i < k; ++i) {
+        if (running[i] && (next < 0 || parkings[i]->spent() < parkings[next]->spent())) next = i;
+      }
+      if (next < 0) break;
+      if (!parkings[next]->turn()) {
+        running[next] = 0;
+        end(next);
+      }
+    }
+  }
+  int best = -1;
+  for (int i = 0; i < k; ++i) {
+    if (home[i] != kNotHome && (best < 0 || home[i] < home[best])) best = i;
+  }
+  if (best < 0) {  // nobody gave way: every order ran its course
+    for (int i = 0; i < k; ++i) expansions += spent[i];
+    return plans[0];
+  }
+  for (int i = 0; i < k; ++i) expansions += std::min(spent[i], home[best].load());
+  plans[best]->order = best;
+  return plans[best];
+}
+
 }  // namespace fleet_planner
+

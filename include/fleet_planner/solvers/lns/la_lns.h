@@ -83,6 +83,9 @@ struct LaLnsOptions {
   int parking_robots = 8;
   long long parking_expansions = 3'000'000;
   double parking_share = 0.5;
+  /// 2: parking plans in two orders, longest way first and shortest first, the one that gets
+  /// every robot home in fewer expansions kept (fastestParkingPlan); 1: longest first only.
+  int parking_orders = 2;
   /// A parking plan that leaves robots short of their targets is finished by its end game
   /// (end_game.h): those robots and the robots on their ways planned together once everybody
   /// else has stopped, in at most `end_game_share` of the time left.

@@ -49,6 +49,7 @@ struct ParkingPlan {
   std::vector<StatePath> paths;
   std::vector<char> home;  ///< the agent's path ends at its target
   int robots_home = 0;
+  int order = 0;  ///< fastestParkingPlan: the index of the order it was made in
 };
 
 /// The plan as far as it got: until every agent is home, the budget or the deadline runs out,
@@ -58,5 +59,19 @@ struct ParkingPlan {
 std::optional<ParkingPlan> parkingPlan(const SearchSpace& space, const std::vector<int>& order,
                                        const Deadline& deadline, const ParkingPlanOptions& options,
                                        long long& expansions);
+
+/// Parking plans of the same agents in several orders: the plan of the order that gets every
+/// agent home in the fewest expansions (ties: the earlier order), else the first order's. No
+/// order of turns suits every fleet (robots that go a long way first make room for the others
+/// in one fleet and block it in the next), and which one does cannot be told beforehand. An
+/// order gives way as soon as another has got every agent home in fewer expansions: it cannot
+/// win. The orders run `threads` at a time; the answer (and the expansions added: the
+/// winner's, and for each other order those it spent up to the winner's count) does not
+/// depend on `threads`.
+std::optional<ParkingPlan> fastestParkingPlan(const SearchSpace& space,
+                                              const std::vector<std::vector<int>>& orders,
+                                              const Deadline& deadline,
+                                              const ParkingPlanOptions& options, int threads,
+                                              long long& expansions);
 
 }  // namespace fleet_planner
