@@ -176,6 +176,18 @@ TEST(SafeIntervalSearch, WaitsInPocketUntilRunnerPassed) {
   EXPECT_TRUE(in_pocket) << "the waiter can only let the runner by from the pocket";
 }
 
+// The plan of a moving obstacle (robot 0) and the path found for agent 0 of `space` (robot 1),
+// through the validator.
+ValidationResult validateAroundObstacle(const World& w, const SearchSpace& space, const Path& obstacle,
+                                        const StatePath& path) {
+  Plan plan;
+  plan.paths.push_back(obstacle);
+  Path p;
+  for (StateId s : path) p.push_back(space.graph(0).pose(s));
+  plan.paths.push_back(p);
+  return validatePlan(w.map, w.instance, plan);
+}
+
 // A corridor of 8 cells: a robot of another subproblem (the blocker) stands at x = 3 until step
 // `wait`, then drives to the end; the waiter, the subproblem's only robot, goes from x = 0 to 6.
 struct BlockedCorridor {
@@ -212,12 +224,7 @@ TEST(SafeIntervalSearch, WaitsForAMovingObstacleShortOrLong) {
     // One cell behind the blocker (sweeps of a step may not share a cell): x = 6 at step
     // wait + 5, the step after the blocker has parked at x = 7.
     EXPECT_EQ(static_cast<int>(r.path.size()), wait + 6) << "wait " << wait;
-    Plan plan;
-    plan.paths.push_back(c.sub.moving[0].path);
-    Path p;
-    for (StateId s : r.path) p.push_back(c.space.graph(0).pose(s));
-    plan.paths.push_back(p);
-    const ValidationResult v = validatePlan(c.w.map, c.w.instance, plan);
+    const ValidationResult v = validateAroundObstacle(c.w, c.space, c.sub.moving[0].path, r.path);
     EXPECT_TRUE(v.valid()) << "wait " << wait << ": " << v.violation.message;
   }
 }
@@ -268,12 +275,7 @@ TEST(SafeIntervalSearch, ArrivalBoundKeepsPassesOverTheTargetAfterIt) {
     const SafeIntervalResult r = safeIntervalSearch(space, 0, table, Deadline::in(5.0), 100000, bound);
     ASSERT_EQ(r.outcome, SafeIntervalResult::Outcome::Found) << "bound " << bound;
     EXPECT_EQ(static_cast<int>(r.path.size()) - 1, earliest) << "bound " << bound;
-    Plan plan;
-    plan.paths.push_back(m.path);
-    Path p;
-    for (StateId s : r.path) p.push_back(space.graph(0).pose(s));
-    plan.paths.push_back(p);
-    const ValidationResult v = validatePlan(w.map, w.instance, plan);
+    const ValidationResult v = validateAroundObstacle(w, space, m.path, r.path);
     EXPECT_TRUE(v.valid()) << "bound " << bound << ": " << v.violation.message;
   }
 }
@@ -301,12 +303,7 @@ TEST(SafeIntervalSearch, WeightedSearchFindsAPathWithinTheBoundSooner) {
   EXPECT_LE(static_cast<int>(weighted.path.size()) - 1, bound);
   EXPECT_GE(weighted.path.size(), earliest.path.size());
   EXPECT_LT(weighted.expansions * 2, earliest.expansions);
-  Plan plan;
-  plan.paths.push_back(m.path);
-  Path p;
-  for (StateId s : weighted.path) p.push_back(space.graph(0).pose(s));
-  plan.paths.push_back(p);
-  const ValidationResult v = validatePlan(w.map, w.instance, plan);
+  const ValidationResult v = validateAroundObstacle(w, space, m.path, weighted.path);
   EXPECT_TRUE(v.valid()) << v.violation.message;
   // A bound below the earliest arrival still answers NoPath.
   const int first = static_cast<int>(earliest.path.size()) - 1;
