@@ -82,7 +82,7 @@ struct LaLnsOptions {
   /// soft first plan, whose robots drive together rather than one after the other.
   int parking_robots = 8;
   long long parking_expansions = 3'000'000;
-  double parking_share = 0.5;
+  double parking_share = 0.7;
   /// 2: parking plans in two orders, longest way first and shortest first, the one that gets
   /// every robot home in fewer expansions kept (fastestParkingPlan); 1: longest first only.
   int parking_orders = 2;
