@@ -101,7 +101,8 @@ void addSolveCommand(CLI::App& app) {
   cmd->add_option("--seed", o->planning.seed, "random seed (same seed, same plan)");
   cmd->add_option("--out", o->out, "write the plan (YAML) here on success");
   cmd->add_option("--threads", o->planning.threads,
-                  "threads for graphs, relation graphs and subproblems (default 0: the machine's cores)")
+                  "threads for graphs, relation graphs, subproblems and a whole fleet's two parking plans; "
+                  "the plan does not depend on it (default 0: the machine's cores)")
       ->check(CLI::NonNegativeNumber);
   cmd->add_option("--lattice-step", o->planning.lattice_step,
                   "planning lattice: moves advance this many map cells (default 0: a third of the narrowest "
