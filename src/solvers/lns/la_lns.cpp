@@ -97,13 +97,16 @@ std::optional<SolveResult> LnsSearch::parkFirst(const std::vector<int>& order, s
   o.max_pockets = std::max(1, options_.pockets);
   o.max_expansions = options_.parking_expansions;
   const Deadline deadline = problem_.deadline.within(problem_.deadline.remaining() * options_.parking_share);
-  // Longest first and shortest first, the faster of the two (fastestParkingPlan).
-  std::vector<int> shortest_first = order;
-  std::stable_sort(shortest_first.begin(), shortest_first.end(), [&](int x, int y) {
-    return space_.distance(x, space_.start(x)) < space_.distance(y, space_.start(y));
-  });
+  // Longest first and shortest first, the faster of the two (fastestParkingPlan); one order
+  // when they are the same (every robot as far from home as the others).
   std::vector<std::vector<int>> orders = {order};
-  if (options_.parking_orders > 1) orders.push_back(shortest_first);
+  if (options_.parking_orders > 1) {
+    std::vector<int> shortest_first = order;
+    std::stable_sort(shortest_first.begin(), shortest_first.end(), [&](int x, int y) {
+      return space_.distance(x, space_.start(x)) < space_.distance(y, space_.start(y));
+    });
+    if (shortest_first != order) orders.push_back(std::move(shortest_first));
+  }
   const std::optional<ParkingPlan> plan =
       fastestParkingPlan(space_, orders, deadline, o, problem_.threads, stats_.low_level_expansions);
   if (!plan) return std::nullopt;

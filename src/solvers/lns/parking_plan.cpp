@@ -424,4 +424,3 @@ std::optional<ParkingPlan> fastestParkingPlan(const SearchSpace& space,
 }
 
 }  // namespace fleet_planner
-
