@@ -3,6 +3,8 @@
 
 #include "fleet_planner/infeasibility/pair_goal_search.h"
 #include "fleet_planner/solvers/lacam/la_lacam.h"
+#include "fleet_planner/solvers/search/safe_interval_search.h"
+#include "fleet_planner/solvers/search/solve_common.h"
 
 namespace fleet_planner {
 
@@ -10,10 +12,11 @@ namespace {
 
 // Joint configurations the backward search of a pair's goal may collect (about 40 bytes each).
 constexpr long long kBackwardConfigurations = 1'000'000;
+// Expansions of each single-robot search of a pair planned in turn: a robot's way across a
+// real map, around one other robot, takes a few thousand.
+constexpr long long kInTurnExpansions = 20'000;
 
-}  // namespace
-
-SolveResult searchPairAlone(const Subproblem& around, int a, int b, long long max_expansions, const Deadline& deadline) {
+Subproblem pairOf(const Subproblem& around, int a, int b, const Deadline& deadline) {
   Subproblem pair;
   pair.instance = around.instance;
   pair.graphs = around.graphs;
@@ -21,8 +24,38 @@ SolveResult searchPairAlone(const Subproblem& around, int a, int b, long long ma
   pair.blocked = around.blocked;
   pair.returning = around.returning;
   pair.deadline = deadline;
+  return pair;
+}
+
+}  // namespace
+
+SolveResult searchPairAlone(const Subproblem& around, int a, int b, long long max_expansions, const Deadline& deadline) {
+  Subproblem pair = pairOf(around, a, b, deadline);
   pair.max_expansions = max_expansions;
   return LaLacam().solve(pair);
+}
+
+SolveResult planPairInTurn(const Subproblem& around, int a, int b, long long max_expansions_per_search,
+                           const Deadline& deadline) {
+  return solveWith(pairOf(around, a, b, deadline), false, [&](const SearchSpace& space, SolveStats& stats) {
+    for (const auto& [first, second] : {std::pair{0, 1}, std::pair{1, 0}}) {
+      SoftPathTable table(space);
+      std::vector<StatePath> paths(2);
+      for (int k : {first, second}) {
+        const SafeIntervalResult r = safeIntervalSearch(space, k, table, deadline, max_expansions_per_search);
+        stats.low_level_expansions += r.expansions;
+        if (r.outcome != SafeIntervalResult::Outcome::Found) break;
+        paths[k] = r.path;
+        table.insert(k, paths[k]);
+      }
+      if (paths[second].empty() || firstConflict(space, paths)) continue;
+      SolveResult found;
+      found.status = SolveStatus::Success;
+      found.paths = toPosePaths(space, paths);
+      return found;
+    }
+    return failedResult(SolveStatus::Timeout, "neither robot can go first");
+  });
 }
 
 std::optional<std::string> findInfeasiblePair(const Instance& instance, const FleetGraphs& graphs,
@@ -33,6 +66,7 @@ std::optional<std::string> findInfeasiblePair(const Instance& instance, const Fl
     Subproblem alone;  // the map's obstacles only
     alone.instance = &instance;
     alone.graphs = &graphs;
+    if (planPairInTurn(alone, a, b, kInTurnExpansions, deadline).success()) continue;
     const SolveResult r = searchPairAlone(alone, a, b, max_expansions, deadline);
     std::string why = r.reason;
     if (r.status != SolveStatus::Infeasible) {

@@ -49,6 +49,34 @@ TEST(InfeasiblePairs, AnExpiredDeadlineProvesNothing) {
   EXPECT_FALSE(findInfeasiblePair(in, graphs, {{0, 1}}, 1'000'000, Deadline::in(0.0)).has_value());
 }
 
+// B must pass the cell where A ends, A waits in a side cell: A first leaves B no way, B first
+// serves. The pair is planned in turn, B first, and the plan is valid.
+TEST(InfeasiblePairs, APairIsPlannedInTurnInTheOrderThatServes) {
+  const GridMap map = test::mapFromRows({".....", "@.@@@"});
+  Instance in;
+  in.robots = {dot("A", {1, 1, 3}, {2, 0, 0}), dot("B", {0, 0, 0}, {4, 0, 0})};
+  const FleetGraphs graphs(map, footprintsOf(in));
+  Subproblem alone;
+  alone.instance = &in;
+  alone.graphs = &graphs;
+  const SolveResult r = planPairInTurn(alone, 0, 1, 10'000, Deadline::in(5.0));
+  ASSERT_TRUE(r.success()) << r.reason;
+  EXPECT_TRUE(validatePlan(map, in, Plan{r.paths}).valid());
+  EXPECT_GT(r.paths[0].size(), 3u);  // A waits for B
+}
+
+// Trading ends of a corridor through a side pocket takes both robots' manoeuvre: no order
+// serves, and planning in turn decides nothing (the pair proof then goes on to LA-LaCAM).
+TEST(InfeasiblePairs, ASwapThroughAPocketIsNotPlannedInTurn) {
+  const GridMap map = test::mapFromRows({".......", "@@@.@@@"});
+  const Instance in = swapThrough(7);
+  const FleetGraphs graphs(map, footprintsOf(in));
+  Subproblem alone;
+  alone.instance = &in;
+  alone.graphs = &graphs;
+  EXPECT_EQ(planPairInTurn(alone, 0, 1, 10'000, Deadline::in(5.0)).status, SolveStatus::Timeout);
+}
+
 // The layered planner answers INFEASIBLE, naming the pair, instead of merging and timing out:
 // each robot alone passes the pre-check, but A and B are entangled (no order of the two serves)
 // and the pair proof ends it before any subproblem is solved.

@@ -5,7 +5,9 @@
 /// over joint configurations is complete, and it ends either with a plan or with every reachable
 /// configuration explored. Where it runs out of expansions first (an open map has many
 /// configurations to explore), the search backwards from the pair's goal (pair_goal_search.h)
-/// may still decide it. Used on the decomposition's entangled pairs and on subproblems that
+/// may still decide it. Most pairs tried are not impossible: a plan of one robot after the
+/// other, found first, shows that in a few single-robot searches (LA-LaCAM may take seconds
+/// to find the manoeuvre on a real map). Used on the decomposition's entangled pairs and on subproblems that
 /// failed, where a knot of robots that no backend unties may be no knot but an impossibility
 /// (e.g. a wide robot whose start and target fill the only corridor that another robot must
 /// cross).
@@ -29,8 +31,17 @@ namespace fleet_planner {
 /// `max_expansions` or at the deadline.
 SolveResult searchPairAlone(const Subproblem& around, int a, int b, long long max_expansions, const Deadline& deadline);
 
+/// Robots a and b alone among `around`'s static footprints, planned one after the other: the
+/// first on its own, the second around the first's path (and the first standing at its target
+/// for good), in the order a, b and then b, a. SUCCESS with the plan if an order serves, else
+/// TIMEOUT (which decides nothing: the pair may need both to manoeuvre). Each single-robot
+/// search stops after `max_expansions_per_search` or at the deadline.
+SolveResult planPairInTurn(const Subproblem& around, int a, int b, long long max_expansions_per_search,
+                           const Deadline& deadline);
+
 /// The first of `pairs` (instance indices) proven unable to reach both targets, as a message
-/// naming both robots; nullopt if none is proven (each pair's forward search stops after
+/// naming both robots; nullopt if none is proven (a pair planned in turn is not searched
+/// further; each pair's forward search stops after
 /// `max_expansions`, its backward search after a million configurations, and all stop at the
 /// deadline).
 std::optional<std::string> findInfeasiblePair(const Instance& instance, const FleetGraphs& graphs,
