@@ -134,6 +134,99 @@ TEST(ContactProbeSearch, SoftPathTableFindsEveryContact) {
   EXPECT_GT(unsafe_seen, 30);
 }
 
+// The pose after a move of agent a from s (its graph's successor).
+StateId after(const SearchSpace& space, int a, StateId s, Action action) {
+  StateId next = kNoState;
+  space.graph(a).forEachSuccessor(s, [&](Action act, StateId n) {
+    if (act == action) next = n;
+  });
+  return next;
+}
+
+// A move's sweep is its body before, its body after and the extra cells (SearchSpace::moveExtra),
+// for every robot shape, heading and move that has them, at lattice steps 1 to 3: every straight
+// move and a disc's turns; a block's straight moves have no extra cells.
+TEST(ContactProbeSearch, AMoveIsItsTwoBodiesAndItsExtraCells) {
+  for (int step = 1; step <= 3; ++step) {
+    const World w(freeMap(40, 40), largeRobots());
+    ActionModel model;
+    model.step = step;
+    model.allow_backward = true;
+    std::vector<Footprint> footprints;
+    for (const Robot& r : w.instance.robots) footprints.push_back(r.footprint);
+    const FleetGraphs graphs(w.map, footprints, model);
+    Subproblem sub = allRobots(w);
+    sub.graphs = &graphs;
+    const SearchSpace space(sub);
+    for (int a = 0; a < space.numAgents(); ++a) {
+      for (int h = 0; h < kHeadings; ++h) {
+        const StateId s = space.graph(a).id({20, 20, h});
+        for (Action action : {Action::Forward, Action::Backward, Action::RotateCcw, Action::RotateCw}) {
+          const CellSet* extra = space.moveExtra(a, h, action);
+          const bool straight = action == Action::Forward || action == Action::Backward;
+          if (straight || a == 0) ASSERT_NE(extra, nullptr) << space.label(a) << " step " << step;  // a disc turns in its body
+          if (extra == nullptr) continue;
+          const GridPose q = space.graph(a).pose(after(space, a, s, action));
+          const CellSet both = space.cells(a).body(h).unionWith(space.cells(a).body(q.heading), {q.x - 20, q.y - 20});
+          EXPECT_EQ(both.unionWith(*extra, {0, 0}), space.cells(a).swept(h, action)) << space.label(a);
+          EXPECT_FALSE(CellSet::overlap(both, {0, 0}, *extra, {0, 0})) << space.label(a);
+          if (a == 1 && (action == Action::Forward || action == Action::Backward)) EXPECT_TRUE(extra->empty());
+        }
+        EXPECT_EQ(space.moveExtra(a, h, Action::Wait), nullptr);
+      }
+    }
+  }
+}
+
+// So a move's unsafe steps are those of its two bodies and of its extra cells: on random walks,
+// the union of the three answers the soft path table's query on the move itself.
+TEST(ContactProbeSearch, AMovesUnsafeStepsAreItsBodiesAndItsExtraCells) {
+  const World w(freeMap(40, 40), largeRobots());
+  const SearchSpace space(allRobots(w));
+  Rng rng(5);
+  int unsafe_seen = 0;
+  auto steps = [](const std::vector<std::pair<int, int>>& runs, int forever, int until) {
+    std::set<int> out;
+    for (int t = 0; t <= until; ++t) {
+      const bool in = t >= forever ||
+                      std::any_of(runs.begin(), runs.end(), [t](const auto& r) { return r.first <= t && t <= r.second; });
+      if (in) out.insert(t);
+    }
+    return out;
+  };
+  for (int round = 0; round < 150; ++round) {
+    std::vector<StatePath> walks;
+    SoftPathTable table(space);
+    for (int a = 0; a < space.numAgents(); ++a) {
+      walks.push_back(randomWalk(space, a, static_cast<int>(rng.uniformInt(0, 10)), rng));
+      table.insert(a, walks.back());
+    }
+    const int a = static_cast<int>(rng.uniformInt(0, space.numAgents() - 1));
+    const StateId s = somewhere(space, a, walks, rng);
+    const GridPose p = space.graph(a).pose(s);
+    const int from = static_cast<int>(rng.uniformInt(0, 3));
+    const int until = table.lastMove() + 2;
+    for (Action action : {Action::Forward, Action::RotateCcw, Action::RotateCw}) {
+      const StateId next = after(space, a, s, action);
+      const CellSet* extra = space.moveExtra(a, p.heading, action);
+      if (next == kNoState || !space.allows(a, s, action) || extra == nullptr) continue;
+      std::vector<std::pair<int, int>> move, parts, runs;
+      int move_forever = SoftPathTable::kNever, forever = SoftPathTable::kNever, f = SoftPathTable::kNever;
+      table.unsafeRuns(a, s, action, move, move_forever, from);
+      for (StateId body : {s, next}) {
+        table.unsafeRuns(a, body, Action::Wait, runs, f, from);
+        parts.insert(parts.end(), runs.begin(), runs.end());
+        forever = std::min(forever, f);
+      }
+      table.spansAt(a, *extra, {p.x, p.y}, parts, forever, from);
+      const std::set<int> expected = steps(move, move_forever, until);
+      ASSERT_EQ(steps(parts, forever, until), expected) << "round " << round << ", " << space.label(a);
+      unsafe_seen += static_cast<int>(expected.size());
+    }
+  }
+  EXPECT_GT(unsafe_seen, 30);
+}
+
 // The reservation table asked with a probe answers as asked with the sweep: the other robots'
 // walks are moving obstacles of the wide block's subproblem.
 TEST(ContactProbeSearch, ReservationsFindEveryContact) {

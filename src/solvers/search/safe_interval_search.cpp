@@ -37,11 +37,25 @@ class Sipp {
   Sipp(const SearchSpace& space, int a, const SoftPathTable& others, int from)
       : space_(space), a_(a), others_(others), graph_(space.graph(a)), from_(from) {}
 
-  // Steps from from_ on during which doing `action` from s collides with another agent or a
-  // moving obstacle.
-  Unsafe unsafe(StateId s, Action action) {
+  // Steps from from_ on during which doing `action` from s (to `next`, for a move) collides
+  // with another agent or a moving obstacle.
+  Unsafe unsafe(StateId s, Action action, StateId next = kNoState) {
     const std::uint64_t k = static_cast<std::uint64_t>(s) * kActions + static_cast<int>(action);
     if (const int* known = unsafe_index_.find(k)) return unsafe_[*known];
+    const GridPose p = graph_.pose(s);
+    const CellSet* extra = next == kNoState ? nullptr : space_.moveExtra(a_, p.heading, action);
+    if (extra != nullptr) {
+      // The sweep is the body before, the body after and a few cells more: the union of the
+      // two bodies' answers (cached, and asked anyway for the safe intervals) and those cells'.
+      const Unsafe before = unsafe(s, Action::Wait), after = unsafe(next, Action::Wait);
+      runs_.assign(before.begin(), before.end());
+      runs_.insert(runs_.end(), after.begin(), after.end());
+      int forever = kNever;
+      others_.spansAt(a_, *extra, {p.x, p.y}, runs_, forever, from_);
+      if (forever != kNever) runs_.emplace_back(forever, kNever);
+      addReservations(*extra, {p.x, p.y});
+      return store(k, kNever, -1);
+    }
     int forever = kNever, lo = kNever, hi = -1;
     if (others_.lastMove() < kSteps) {
       runs_.clear();
@@ -50,19 +64,28 @@ class Sipp {
       others_.unsafeRuns(a_, s, action, runs_, forever, from_);
     }
     if (forever != kNever) runs_.emplace_back(forever, kNever);
+    addReservations(space_.probe(a_, p.heading, action), {p.x, p.y});
+    return store(k, lo, hi);
+  }
+
+  // Appends to runs_ the steps from from_ on during which a moving obstacle covers a cell of
+  // `cells` placed at `origin`.
+  void addReservations(const CellSet& cells, Cell origin) {
     const ReservationTable& reservations = space_.reservations();
-    if (!reservations.empty()) {
-      const GridPose p = graph_.pose(s);
-      const std::size_t from = runs_.size();
-      reservations.takenIntervals(space_.probe(a_, p.heading, action), {p.x, p.y}, runs_);
-      std::size_t kept = from;
-      for (std::size_t i = from; i < runs_.size(); ++i) {
-        if (runs_[i].second == ReservationTable::kForever) runs_[i].second = kNever;
-        if (runs_[i].second < from_) continue;
-        runs_[kept++] = {std::max(runs_[i].first, from_), runs_[i].second};
-      }
-      runs_.resize(kept);
+    if (reservations.empty()) return;
+    const std::size_t from = runs_.size();
+    reservations.takenIntervals(cells, origin, runs_);
+    std::size_t kept = from;
+    for (std::size_t i = from; i < runs_.size(); ++i) {
+      if (runs_[i].second == ReservationTable::kForever) runs_[i].second = kNever;
+      if (runs_[i].second < from_) continue;
+      runs_[kept++] = {std::max(runs_[i].first, from_), runs_[i].second};
     }
+    runs_.resize(kept);
+  }
+
+  // The union of runs_ and of the bitset's steps lo..hi, kept as the answer for key k.
+  Unsafe store(std::uint64_t k, int lo, int hi) {
     unionOf(runs_, merged_, lo, hi);
     unsafe_index_.set(k, static_cast<int>(unsafe_.size()));
     unsafe_.push_back(run_pool_.add(merged_));
@@ -300,7 +323,7 @@ SafeIntervalResult searchBetween(const SearchSpace& space, int a, const SoftPath
       for (int j = skip; j < static_cast<int>(there.size()); ++j) {
         if (here.last != kNever && there[j].first > here.last + 1) break;
         if (!known) {
-          move = sipp.unsafe(node.s, act);
+          move = sipp.unsafe(node.s, act, next);
           known = true;
         }
         const int hi = std::min(here.last, there[j].last == kNever ? kNever : there[j].last - 1);

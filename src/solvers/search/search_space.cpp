@@ -33,6 +33,39 @@ bool restrictedDistances(const SearchSpace& space, int a, const Deadline& deadli
   return true;
 }
 
+// The sweep of `action` from `heading` outside the bodies before and after it; undecomposed
+// when the sweep does not hold both bodies, or when those cells are not fewer than half of the
+// sweep's `probe` (a block's turn: its corners' arcs), which is then the cheaper lookup.
+SearchSpace::MoveExtra moveExtraOf(const FootprintCells& fc, int heading, Action action, const CellSet& probe) {
+  SearchSpace::MoveExtra e;
+  if (action == Action::Wait) return e;
+  const Cell dir = kHeadingStep[heading];
+  const int step = fc.step();
+  Cell shift{0, 0};
+  int after = heading;
+  if (action == Action::Forward) shift = {dir.x * step, dir.y * step};
+  if (action == Action::Backward) shift = {-dir.x * step, -dir.y * step};
+  if (action == Action::RotateCcw) after = kRotateCcw[heading];
+  if (action == Action::RotateCw) after = kRotateCw[heading];
+  const CellSet& sweep = fc.swept(heading, action);
+  const CellSet& before = fc.body(heading);
+  const CellSet& then = fc.body(after);
+  for (const Cell& c : before.cells()) {
+    if (!sweep.contains(c.x, c.y)) return e;
+  }
+  for (const Cell& c : then.cells()) {
+    if (!sweep.contains(c.x + shift.x, c.y + shift.y)) return e;
+  }
+  std::vector<Cell> rest;
+  for (const Cell& c : sweep.cells()) {
+    if (!before.contains(c.x, c.y) && !then.contains(c.x - shift.x, c.y - shift.y)) rest.push_back(c);
+  }
+  if (rest.size() * 2 > probe.size()) return e;
+  e.decomposes = true;
+  e.cells = CellSet::fromCells(std::move(rest));
+  return e;
+}
+
 }  // namespace
 
 SearchSpace::SearchSpace(const Subproblem& problem)
@@ -141,6 +174,20 @@ void SearchSpace::makeProbes() {
       probes = std::move(p);
     }
     probes_[a] = probes;
+  }
+  std::unordered_map<const FootprintCells*, std::shared_ptr<const Extras>> extras;
+  extras_.resize(numAgents());
+  for (int a = 0; a < numAgents(); ++a) {
+    std::shared_ptr<const Extras>& e = extras[&cells(a)];
+    if (!e) {
+      auto x = std::make_shared<Extras>();
+      for (int h = 0; h < kHeadings; ++h) {
+        for (int act = 0; act < kActions; ++act) (*x)[h][act] = moveExtraOf(cells(a), h, static_cast<Action>(act), probe(a, h, static_cast<Action>(act)));
+      }
+      e = std::move(x);
+    }
+    extras_[a] = e;
+
   }
 }
 

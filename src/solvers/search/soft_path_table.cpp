@@ -141,11 +141,9 @@ void SoftPathTable::collisionsHolding(int a, StateId s, int t, std::vector<int>&
 }
 
 template <class F>
-void SoftPathTable::forOtherSpans(int a, StateId s, Action action, int from, int& forever_from,
+void SoftPathTable::forOtherSpans(int a, const CellSet& cells, Cell origin, int from, int& forever_from,
                                   F&& f) const {
-  const GridPose p = space_.graph(a).pose(s);
-  // The probe of the sweep meets every agent's sweep (or body) the sweep meets.
-  forEachMapCell(space_.probe(a, p.heading, action), {p.x, p.y}, width_, height_, [&](int cell) {
+  forEachMapCell(cells, origin, width_, height_, [&](int cell) {
     for (const Span& r : cell_spans_[cell]) {
       if (r.agent == a) continue;
       if (r.last == kNever) {
@@ -155,6 +153,13 @@ void SoftPathTable::forOtherSpans(int a, StateId s, Action action, int from, int
       }
     }
   });
+}
+
+void SoftPathTable::spansAt(int a, const CellSet& cells, Cell origin, std::vector<std::pair<int, int>>& runs,
+                            int& forever_from, int from) const {
+  if (cell_spans_.empty()) return;
+  forOtherSpans(a, cells, origin, from, forever_from,
+                [&](int, int first, int last) { runs.emplace_back(first, last); });
 }
 
 void SoftPathTable::unsafeRuns(int a, StateId s, Action action,

@@ -52,6 +52,21 @@ class SearchSpace {
     return (*probes_[a])[heading][static_cast<int>(action)];
   }
 
+  /// The cells of agent a's sweep doing the move `action` from `heading` that lie outside its
+  /// body before and after the move. The sweep meets a cell set iff the body before, the body
+  /// after or these cells do, so a lookup may read the two bodies' answers and these few cells
+  /// instead of the sweep's probe: a straight move has none or a few. Null for Wait, when the
+  /// sweep does not hold both bodies, and when these cells are not fewer than half the probe
+  /// (a block's turn sweeps arcs at its corners).
+  struct MoveExtra {
+    bool decomposes = false;
+    CellSet cells;
+  };
+  const CellSet* moveExtra(int a, int heading, Action action) const {
+    const MoveExtra& e = (*extras_[a])[heading][static_cast<int>(action)];
+    return e.decomposes ? &e.cells : nullptr;
+  }
+
   /// Empty if every agent has a valid start and target connected in its restricted graph;
   /// otherwise why not, naming the first such robot.
   const std::string& problem() const { return problem_; }
@@ -60,7 +75,7 @@ class SearchSpace {
   bool stopped() const { return stopped_; }
 
  private:
-  // Builds probes_ (after reservations_).
+  // Builds probes_ (after reservations_) and extras_.
   void makeProbes();
 
   const Instance* instance_;
@@ -73,6 +88,8 @@ class SearchSpace {
   ReservationTable reservations_;
   using Probes = std::array<std::array<CellSet, kActions>, kHeadings>;
   std::vector<std::shared_ptr<const Probes>> probes_;  // agents with the same cells share them
+  using Extras = std::array<std::array<MoveExtra, kActions>, kHeadings>;
+  std::vector<std::shared_ptr<const Extras>> extras_;  // shared likewise
   std::string problem_;
   bool stopped_ = false;
 };

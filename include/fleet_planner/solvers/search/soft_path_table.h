@@ -53,6 +53,12 @@ class SoftPathTable {
   /// hold lastMove() + 1 bits.
   void markUnsafe(int a, StateId s, Action action, std::uint64_t* steps, int& lo, int& hi,
                   int& forever_from, int from = 0) const;
+  /// The steps during which an agent in the table other than a sweeps a cell of `cells` placed
+  /// at `origin`, as raw runs appended to `runs` (one per span met, first raised to `from`;
+  /// spans ending before `from` left out), and lowers forever_from as unsafeRuns does. For a
+  /// few cells read one by one (SearchSpace::moveExtra), not a probe.
+  void spansAt(int a, const CellSet& cells, Cell origin, std::vector<std::pair<int, int>>& runs,
+               int& forever_from, int from = 0) const;
   /// Sets the bits of steps first..last (bit t % 64 of steps[t / 64]).
   static void markSteps(std::uint64_t* steps, int first, int last);
   /// Last step during which some agent in the table moves (every path of length 1: -1).
@@ -62,11 +68,17 @@ class SoftPathTable {
   // Adds (on = true) or removes the entries of a's path.
   void index(int a, bool on);
   struct Span;
-  // Calls f(first, last) for every span of another agent than a, at the cells of the probe of a
-  // doing `action` from s, that ends at `from` or later (first raised to `from`); lowers
-  // forever_from to the first step of those that do not end.
+  // Calls f(agent, first, last) for every span of another agent than a, at `cells` placed at
+  // `origin`, that ends at `from` or later (first raised to `from`); lowers forever_from to the
+  // first step of those that do not end.
   template <class F>
-  void forOtherSpans(int a, StateId s, Action action, int from, int& forever_from, F&& f) const;
+  void forOtherSpans(int a, const CellSet& cells, Cell origin, int from, int& forever_from, F&& f) const;
+  // The same at the cells of the probe of a doing `action` from s.
+  template <class F>
+  void forOtherSpans(int a, StateId s, Action action, int from, int& forever_from, F&& f) const {
+    const GridPose p = space_.graph(a).pose(s);
+    forOtherSpans(a, space_.probe(a, p.heading, action), {p.x, p.y}, from, forever_from, f);
+  }
   // Starts a query: a new query_ stamp (all stamps cleared when the counter wraps).
   void newQuery() const;
   // True the first time agent b is met in the current query (query_).
