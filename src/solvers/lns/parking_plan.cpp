@@ -15,6 +15,7 @@
 #include "fleet_planner/solvers/lns/pocket_repair.h"
 #include "fleet_planner/solvers/search/safe_interval_search.h"
 #include "fleet_planner/solvers/search/soft_path_table.h"
+#include "fleet_planner/solvers/search/touched_array.h"
 
 namespace fleet_planner {
 
@@ -151,12 +152,22 @@ class Parking {
                         bool to_target, const std::vector<char>* busy = nullptr,
                         int* blocked_steps = nullptr, bool crowds = true) const {
     const StateGraph& g = space_.graph(a);
-    std::vector<int> cost(static_cast<std::size_t>(g.stateIdCount()), -1);
-    std::vector<StateId> parent(cost.size(), kNoState);
+    // Its goal may search again (reachesHome): one scratch per depth.
+    if (way_depth_ == way_scratch_.size()) way_scratch_.push_back(std::make_unique<WayScratch>());
+    WayScratch& scratch = *way_scratch_[way_depth_++];
+    struct Leave {
+      std::size_t& depth;
+      ~Leave() { --depth; }
+    } leave{way_depth_};
+    TouchedArray<int>& cost = scratch.cost;
+    cost.reset(static_cast<std::size_t>(g.stateIdCount()), -1);
+    std::vector<StateId>& parent = scratch.parent;  // read only where cost is set
+    parent.resize(static_cast<std::size_t>(g.stateIdCount()));
+    parent[from] = kNoState;
     using Entry = std::pair<long long, StateId>;  // (f, state)
     std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> open;
     auto h = [&](StateId s) { return to_target ? space_.distance(a, s) : 0; };
-    cost[from] = 0;
+    cost.set(from, 0);
     open.push({h(from), from});
     long long popped = 0;
     while (!open.empty() && popped++ < options_.max_way_states) {
@@ -178,7 +189,7 @@ class Parking {
         if (crowd == 2) return;  // through a robot that is not to be pushed
         const int c = cost[s] + 1 + (crowd ? options_.crowd_cost : 0);
         if (cost[next] >= 0 && cost[next] <= c) return;
-        cost[next] = c;
+        cost.set(next, c);
         parent[next] = s;
         open.push({c + h(next), next});
       });
@@ -325,6 +336,12 @@ class Parking {
   PocketRepairOptions pocket_options_;
   long long spent_ = 0;
   mutable std::vector<int> met_;
+  struct WayScratch {
+    TouchedArray<int> cost;
+    std::vector<StateId> parent;
+  };
+  mutable std::vector<std::unique_ptr<WayScratch>> way_scratch_;  // cheapestWay's, by depth
+  mutable std::size_t way_depth_ = 0;
   SafeIntervalResult::Outcome last_outcome_ = SafeIntervalResult::Outcome::NoPath;
 };
 
