@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <memory>
 #include <numeric>
 
 #include "fleet_planner/model/collision.h"
@@ -19,51 +20,6 @@ namespace fleet_planner {
 namespace {
 
 using path_steps::radiusOf;
-
-// The robot's path around every other robot's path, strictly cheaper than `cost`; empty if
-// there is none (or the search hit a limit).
-Path cheaperPath(const Instance& instance, const FleetGraphs& graphs, const std::vector<Path>& paths, int robot,
-                 int cost, const Deadline& deadline, const RefinementOptions& options, int& lower_bound,
-                 long long& expansions) {
-  Subproblem sub;
-  sub.instance = &instance;
-  sub.graphs = &graphs;
-  sub.robots = {robot};
-  sub.deadline = deadline;
-  // A path of cost below `cost` stays where the Manhattan distances to start and target add up
-  // to less than it times the cells of a move (the lattice step): robots that never come within
-  // reach of that region cannot matter.
-  const GridPose& from = instance.robots[robot].start;
-  const GridPose& to = instance.robots[robot].target;
-  const int radius = radiusOf(graphs.cells(robot));
-  const int step = graphs.cells(robot).step();
-  for (int j = 0; j < static_cast<int>(paths.size()); ++j) {
-    if (j == robot) continue;
-    const int slack = (cost - 1) * step + 4 * (radius + radiusOf(graphs.cells(j)));
-    const bool near = std::any_of(paths[j].begin(), paths[j].end(), [&](const GridPose& q) {
-      return std::abs(q.x - from.x) + std::abs(q.y - from.y) + std::abs(q.x - to.x) + std::abs(q.y - to.y) <= slack;
-    });
-    if (near) sub.moving.push_back({j, paths[j]});
-  }
-  const SearchSpace space(sub);
-  if (space.stopped() || !space.problem().empty()) return {};  // stopped: the deadline passed
-  lower_bound = space.distance(0, space.start(0));
-  if (lower_bound >= cost) return {};
-  // Safe intervals: a wait is one node, so a path that waits for others to pass costs a few
-  // expansions, and the bound (arrive before `cost`) ends the search soon when there is no
-  // cheaper path, where space-time A* must still try every step of every wait. Any cheaper
-  // path improves the plan: a weighted heuristic finds one in fewer expansions than proving
-  // the cheapest, and the bound (on the unweighted one) still keeps only cheaper paths.
-  const SoftPathTable nobody(space);  // the others are the space's moving obstacles
-  const SafeIntervalResult found =
-      safeIntervalSearch(space, 0, nobody, deadline, options.max_nodes_per_search, cost - 1,
-                         options.heuristic_weight);
-  expansions += found.expansions;
-  Path path;
-  if (found.outcome != SafeIntervalResult::Outcome::Found) return path;
-  for (StateId s : found.path) path.push_back(space.graph(0).pose(s));
-  return path;
-}
 
 // The robot's cheapest path with nobody else around.
 Path idealPath(const Instance& instance, const FleetGraphs& graphs, int robot, const Deadline& deadline) {
@@ -115,11 +71,28 @@ class Refiner {
       : instance_(instance), graphs_(graphs), paths_(paths), deadline_(deadline), options_(options),
         n_(static_cast<int>(paths.size())),
         max_expansions_(std::min(options.max_expansions, options.expansions_per_robot * n_)),
-        lower_(n_, 0), known_(n_, 0), ideal_(n_) {}
+        lower_(n_, 0), known_(n_, 0), ideal_(n_) {
+    // Every robot's path in one soft path table, kept up to date as paths are replaced: a
+    // search reads the others' paths from it (its own is ignored), and only the searched
+    // robot's distance table is built, for the search.
+    Subproblem all;
+    all.instance = &instance;
+    all.graphs = &graphs;
+    all.robots.resize(n_);
+    std::iota(all.robots.begin(), all.robots.end(), 0);
+    all.deadline = deadline;
+    space_ = std::make_unique<SearchSpace>(all, false);
+    if (!space_->problem().empty()) return;
+    table_ = std::make_unique<SoftPathTable>(*space_);
+    for (int i = 0; i < n_; ++i) {
+      if (!track(i)) return;
+    }
+    tracked_ = true;
+  }
 
   RefinementStats run() {
     const auto start = std::chrono::steady_clock::now();
-    while (stats_.passes < options_.max_passes && !outOfTime() && stats_.expansions < max_expansions_) {
+    while (tracked_ && stats_.passes < options_.max_passes && !outOfTime() && stats_.expansions < max_expansions_) {
       ++stats_.passes;
       const int improved = singlePass();
       stats_.improved += improved;
@@ -171,16 +144,13 @@ class Refiner {
       const int cost = costOf(i);
       if (known_[i] && cost <= lower_[i]) continue;
       ++stats_.searches;
-      int bound = lower_[i];
-      Path better = timed(
-          [&] { return cheaperPath(instance_, graphs_, paths_, i, cost, deadline_, options_, bound, stats_.expansions); });
-      lower_[i] = bound;
-      known_[i] = 1;
+      Path better = timed([&] { return cheaperPath(i, cost); });
       if (better.empty()) continue;
       const int new_cost = pathCost(better, instance_.robots[i].target);
       if (new_cost < 0 || new_cost >= cost) continue;
       stats_.soc_saved += cost - new_cost;
       paths_[i] = std::move(better);
+      if (!track(i)) return improved + 1;
       ++improved;
     }
     return improved;
@@ -234,7 +204,55 @@ class Refiner {
     if (after >= before || longest > makespan()) return false;  // SOC drops, makespan does not grow
     for (std::size_t k = 0; k < group.size(); ++k) paths_[group[k]] = solved.paths[k];
     stats_.soc_saved += before - after;
+    for (int r : group) {
+      if (!track(r)) break;
+    }
     return true;
+  }
+
+  // Robot i's path (paths_[i]) put in the table in place of its old one; false (and the
+  // refinement ends) if it is not a path of i's state graph.
+  bool track(int i) {
+    const StateGraph& g = space_->graph(i);
+    StatePath states;
+    for (const GridPose& p : paths_[i]) {
+      const StateId s = g.id(p);
+      if (s == kNoState) return tracked_ = false;
+      if (!states.empty() && s != states.back()) {
+        bool edge = false;
+        g.forEachSuccessor(states.back(), [&](Action, StateId next) { edge = edge || next == s; });
+        if (!edge) return tracked_ = false;
+      }
+      states.push_back(s);
+    }
+    if (states.empty()) return tracked_ = false;
+    if (table_->contains(i)) table_->remove(i);
+    table_->insert(i, states);
+    return true;
+  }
+
+  // Robot i's path around every other robot's path, strictly cheaper than `cost`; empty if
+  // there is none (or the search hit a limit). Learns i's lower bound.
+  Path cheaperPath(int i, int cost) {
+    Path path;
+    if (!space_->buildDistances(i, deadline_)) return path;  // the deadline passed
+    lower_[i] = space_->distance(i, space_->start(i));
+    known_[i] = 1;
+    // Safe intervals: a wait is one node, so a path that waits for others to pass costs a few
+    // expansions, and the bound (arrive before `cost`) ends the search soon when there is no
+    // cheaper path, where space-time A* must still try every step of every wait. Any cheaper
+    // path improves the plan: a weighted heuristic finds one in fewer expansions than proving
+    // the cheapest, and the bound (on the unweighted one) still keeps only cheaper paths.
+    if (lower_[i] >= 0 && lower_[i] < cost) {
+      const SafeIntervalResult found = safeIntervalSearch(*space_, i, *table_, deadline_, options_.max_nodes_per_search,
+                                                          cost - 1, options_.heuristic_weight);
+      stats_.expansions += found.expansions;
+      if (found.outcome == SafeIntervalResult::Outcome::Found) {
+        for (StateId s : found.path) path.push_back(space_->graph(i).pose(s));
+      }
+    }
+    space_->dropDistances(i);
+    return path;
   }
 
   const Instance& instance_;
@@ -249,6 +267,9 @@ class Refiner {
   std::vector<char> known_;  // lower_[i] is known
   std::vector<Path> ideal_;
   double longest_search_s_ = 0.0;
+  std::unique_ptr<SearchSpace> space_;  // every robot; distance tables only while searched
+  std::unique_ptr<SoftPathTable> table_;
+  bool tracked_ = false;  // every path is in table_
 };
 
 }  // namespace

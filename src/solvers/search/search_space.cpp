@@ -68,7 +68,7 @@ SearchSpace::MoveExtra moveExtraOf(const FootprintCells& fc, int heading, Action
 
 }  // namespace
 
-SearchSpace::SearchSpace(const Subproblem& problem)
+SearchSpace::SearchSpace(const Subproblem& problem, bool distances)
     : instance_(problem.instance), graphs_(problem.graphs), robots_(problem.robots) {
   if (instance_ == nullptr || graphs_ == nullptr) throw InvalidInput("subproblem without instance or graphs");
   const int n = static_cast<int>(instance_->robots.size());
@@ -111,16 +111,17 @@ SearchSpace::SearchSpace(const Subproblem& problem)
     starts_.push_back(graph(a).id(start));
     targets_.push_back(graph(a).id(target));
   }
-  if (const MemoryGuard* guard = problem.deadline.memoryGuard()) {
+  distances_.resize(numAgents());
+  const MemoryGuard* guard = problem.deadline.memoryGuard();
+  if (guard && distances) {
     guard->reserve(static_cast<double>(numAgents()) * static_cast<double>(distanceTableBytes(
                                                           static_cast<long long>(g0.width()) * g0.height())) /
                        1048576.0,
                    "the distance tables of " + std::to_string(numAgents()) + " robots");
   }
-  distances_.resize(numAgents());
   std::vector<std::int32_t> steps;  // one agent's table as the search fills it
   for (int a = 0; a < numAgents() && problem_.empty(); ++a) {
-    if (problem.deadline.expired()) {  // one table per agent: on large maps and fleets, seconds
+    if (distances && problem.deadline.expired()) {  // one table per agent: on large maps and fleets, seconds
       stopped_ = true;
       return;
     }
@@ -135,7 +136,7 @@ SearchSpace::SearchSpace(const Subproblem& problem)
       problem_ = label(a) + ": start " + toString(start) + " overlaps a footprint of another subproblem";
     } else if (!allows(a, targets_[a], Action::Wait)) {
       problem_ = label(a) + ": target " + toString(target) + " overlaps a footprint of another subproblem";
-    } else {
+    } else if (distances) {
       if (!restrictedDistances(*this, a, problem.deadline, steps)) {
         stopped_ = true;
         return;
@@ -146,6 +147,13 @@ SearchSpace::SearchSpace(const Subproblem& problem)
       }
     }
   }
+}
+
+bool SearchSpace::buildDistances(int a, const Deadline& deadline) {
+  std::vector<std::int32_t> steps;
+  if (!restrictedDistances(*this, a, deadline, steps)) return false;
+  distances_[a].assign(steps);
+  return true;
 }
 
 void SearchSpace::makeProbes() {

@@ -22,7 +22,15 @@ class SearchSpace {
   /// With a memory guard on the deadline, throws ResourceLimitError (max_memory_mb) if the
   /// distance tables would not fit, before allocating them. The tables are built until the
   /// subproblem's deadline: if it passes first, stopped() is true and the space is unusable.
-  explicit SearchSpace(const Subproblem& problem);
+  explicit SearchSpace(const Subproblem& problem) : SearchSpace(problem, true) {}
+  /// Without `distances`, no agent's table is built (nor its target's reachability checked):
+  /// buildDistances() builds those that will be searched, for a caller that searches a few
+  /// agents of many (plan refinement), and distance() must not be asked of the others.
+  SearchSpace(const Subproblem& problem, bool distances);
+  /// Builds agent a's distance table; false if the deadline passed first (a has none then).
+  bool buildDistances(int a, const Deadline& deadline);
+  /// Frees agent a's distance table.
+  void dropDistances(int a) { distances_[a] = DistanceTable(); }
 
   int numAgents() const { return static_cast<int>(robots_.size()); }
   /// Instance index of agent a.
