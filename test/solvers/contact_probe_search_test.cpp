@@ -227,6 +227,44 @@ TEST(ContactProbeSearch, AMovesUnsafeStepsAreItsBodiesAndItsExtraCells) {
   EXPECT_GT(unsafe_seen, 30);
 }
 
+// The robots met standing for good (collisionsAtEnd) are those met at the step after every
+// move (collisions), after paths are inserted, removed and inserted again.
+TEST(ContactProbeSearch, EndQueriesAgreeWithStepQueries) {
+  const World w(freeMap(40, 40), largeRobots());
+  const SearchSpace space(allRobots(w));
+  Rng rng(7);
+  int met_seen = 0;
+  for (int round = 0; round < 100; ++round) {
+    std::vector<StatePath> walks;
+    SoftPathTable table(space);
+    for (int a = 0; a < space.numAgents(); ++a) {
+      walks.push_back(randomWalk(space, a, static_cast<int>(rng.uniformInt(0, 10)), rng));
+      table.insert(a, walks.back());
+    }
+    for (int a = 0; a < space.numAgents(); a += 2) {  // moved: their old ends must be forgotten
+      table.remove(a);
+      walks[a] = randomWalk(space, a, static_cast<int>(rng.uniformInt(0, 10)), rng);
+      table.insert(a, walks[a]);
+    }
+    const int a = static_cast<int>(rng.uniformInt(0, space.numAgents() - 1));
+    for (int k = 0; k < 20; ++k) {
+      const StateId s = somewhere(space, a, walks, rng);
+      for (int act = 0; act < kActions; ++act) {
+        const Action action = static_cast<Action>(act);
+        if (!space.allows(a, s, action)) continue;
+        std::vector<int> at_end, at_step;
+        table.collisionsAtEnd(a, s, action, at_end);
+        table.collisions(a, s, action, table.lastMove() + 1, at_step);
+        std::sort(at_end.begin(), at_end.end());
+        std::sort(at_step.begin(), at_step.end());
+        ASSERT_EQ(at_end, at_step) << "round " << round << ", " << space.label(a);
+        met_seen += static_cast<int>(at_end.size());
+      }
+    }
+  }
+  EXPECT_GT(met_seen, 30);
+}
+
 // The reservation table asked with a probe answers as asked with the sweep: the other robots'
 // walks are moving obstacles of the wide block's subproblem.
 TEST(ContactProbeSearch, ReservationsFindEveryContact) {

@@ -136,7 +136,7 @@ class Parking {
   int crowded(int a, StateId s, Action action = Action::Wait,
               const std::vector<char>* busy = nullptr) const {
     met_.clear();
-    table_.collisions(a, s, action, table_.lastMove() + 1, met_);
+    table_.collisionsAtEnd(a, s, action, met_);
     if (busy && std::any_of(met_.begin(), met_.end(), [&](int b) { return (*busy)[b] != 0; }))
       return 2;
     return met_.empty() ? 0 : 1;

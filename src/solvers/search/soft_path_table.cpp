@@ -41,6 +41,7 @@ void SoftPathTable::index(int a, bool on) {
       return;
     }
     std::vector<Span>& spans = cell_spans_[cell];
+    if (last == kNever) countEnd(cell, 1);
     if (!spans.empty() && spans.back().agent == a && spans.back().last == t - 1) {
       spans.back().last = last;
     } else {
@@ -66,6 +67,9 @@ void SoftPathTable::index(int a, bool on) {
   forEachMapCell(body, {end.x, end.y}, width_, height_, [&](int cell) { span(cell, steps, kNever); });
   for (int cell : touched) {
     std::vector<Span>& spans = cell_spans_[cell];
+    for (const Span& r : spans) {
+      if (r.agent == a && r.last == kNever) countEnd(cell, -1);
+    }
     spans.erase(std::remove_if(spans.begin(), spans.end(), [a](const Span& r) { return r.agent == a; }),
                 spans.end());
     std::uint64_t blocks = 0;
@@ -79,6 +83,9 @@ void SoftPathTable::insert(int a, const StatePath& path) {
     cell_spans_.resize(static_cast<std::size_t>(width_) * height_);
     cell_blocks_.assign(cell_spans_.size(), 0);
     cell_stamp_.assign(cell_spans_.size(), 0);
+    end_cells_.assign(cell_spans_.size(), 0);
+    end_squares_x_ = (width_ + kEndSide - 1) / kEndSide;
+    end_squares_.assign(static_cast<std::size_t>(end_squares_x_) * ((height_ + kEndSide - 1) / kEndSide), 0);
   }
   paths_[a] = path;
   index(a, true);
@@ -122,6 +129,34 @@ void SoftPathTable::collisions(int a, StateId s, Action action, int t,
     if (!(cell_blocks_[cell] & block)) return;
     for (const Span& r : cell_spans_[cell]) {
       if (r.first <= t && t <= r.last && firstVisit(r.agent)) out.push_back(r.agent);
+    }
+  });
+}
+
+void SoftPathTable::countEnd(int cell, int delta) {
+  end_cells_[cell] = static_cast<std::uint16_t>(end_cells_[cell] + delta);
+  const int square = (cell / width_) / kEndSide * end_squares_x_ + (cell % width_) / kEndSide;
+  end_squares_[square] = static_cast<std::uint16_t>(end_squares_[square] + delta);
+}
+
+void SoftPathTable::collisionsAtEnd(int a, StateId s, Action action, std::vector<int>& out) const {
+  if (cell_spans_.empty()) return;
+  const GridPose p = space_.graph(a).pose(s);
+  const CellSet& probe = space_.probe(a, p.heading, action);
+  if (probe.empty()) return;
+  const int x0 = std::max(p.x + probe.minX(), 0) / kEndSide, x1 = std::min(p.x + probe.maxX(), width_ - 1) / kEndSide;
+  const int y0 = std::max(p.y + probe.minY(), 0) / kEndSide, y1 = std::min(p.y + probe.maxY(), height_ - 1) / kEndSide;
+  bool any = false;
+  for (int y = y0; y <= y1 && !any; ++y) {
+    for (int x = x0; x <= x1 && !any; ++x) any = end_squares_[static_cast<std::size_t>(y) * end_squares_x_ + x] > 0;
+  }
+  if (!any) return;
+  newQuery();
+  stamp_[a] = query_;
+  forEachMapCell(probe, {p.x, p.y}, width_, height_, [&](int cell) {
+    if (end_cells_[cell] == 0) return;
+    for (const Span& r : cell_spans_[cell]) {
+      if (r.last == kNever && firstVisit(r.agent)) out.push_back(r.agent);
     }
   });
 }

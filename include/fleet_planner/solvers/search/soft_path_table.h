@@ -33,6 +33,10 @@ class SoftPathTable {
   /// Agents in the table other than a that collide with a doing `action` from s during step t,
   /// each once, appended to `out`.
   void collisions(int a, StateId s, Action action, int t, std::vector<int>& out) const;
+  /// Agents in the table other than a that stand for good where their paths end and meet a
+  /// doing `action` from s, each once, appended to `out`: collisions() at step lastMove() + 1,
+  /// answered from the cells where robots stand for good (most of a map has none).
+  void collisionsAtEnd(int a, StateId s, Action action, std::vector<int>& out) const;
   /// Agents in the table other than a that collide with a standing at s during some step t or
   /// later, each once, appended to `out`.
   void collisionsHolding(int a, StateId s, int t, std::vector<int>& out) const;
@@ -104,6 +108,12 @@ class SoftPathTable {
   static std::uint64_t blocksOf(int first, int last);
   static std::uint64_t blockOf(int t);
   std::vector<std::uint64_t> cell_blocks_;
+  // Per map cell and per square of kEndSide x kEndSide cells, how many agents stand there for
+  // good (spans with last == kNever): collisionsAtEnd() skips a motion whose squares have none.
+  static constexpr int kEndSide = 8;
+  int end_squares_x_ = 0;
+  std::vector<std::uint16_t> end_cells_, end_squares_;
+  void countEnd(int cell, int delta);
   mutable std::vector<std::vector<std::pair<int, int>>> agent_runs_;  // unsafeRuns' scratch
   mutable std::vector<int> met_;                                     // its agents
   mutable std::vector<std::uint32_t> stamp_;       // dedup of query results, per agent
