@@ -178,6 +178,25 @@ TEST(ContactProbeSearch, AMoveIsItsTwoBodiesAndItsExtraCells) {
   }
 }
 
+// A disc waits alike at every heading, a block symmetric about its centre at opposite headings,
+// a robot with a nose only at its own: the headings that share a wait have the same cells.
+TEST(ContactProbeSearch, HeadingsThatShareAWaitHaveTheSameCells) {
+  const World w(freeMap(40, 40), largeRobots());
+  const SearchSpace space(allRobots(w));
+  for (int a = 0; a < space.numAgents(); ++a) {
+    for (int h = 0; h < kHeadings; ++h) {
+      const int same = space.sameWaitHeading(a, h);
+      EXPECT_LE(same, h);
+      EXPECT_EQ(space.cells(a).body(same), space.cells(a).body(h)) << space.label(a);
+    }
+  }
+  EXPECT_EQ(space.sameWaitHeading(0, 3), 0);  // the disc
+  EXPECT_EQ(space.sameWaitHeading(1, 1), 0);  // the block: +x and -x
+  EXPECT_EQ(space.sameWaitHeading(1, 3), 2);  // +y and -y
+  EXPECT_EQ(space.sameWaitHeading(1, 2), 2);
+  EXPECT_EQ(space.sameWaitHeading(2, 1), 1);  // the nose
+}
+
 // So a move's unsafe steps are those of its two bodies and of its extra cells: on random walks,
 // the union of the three answers the soft path table's query on the move itself.
 TEST(ContactProbeSearch, AMovesUnsafeStepsAreItsBodiesAndItsExtraCells) {

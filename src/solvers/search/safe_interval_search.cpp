@@ -43,6 +43,10 @@ class Sipp {
     const std::uint64_t k = static_cast<std::uint64_t>(s) * kActions + static_cast<int>(action);
     if (const int* known = unsafe_index_.find(k)) return unsafe_[*known];
     const GridPose p = graph_.pose(s);
+    if (action == Action::Wait) {  // a disc waits alike at every heading: one answer
+      const int same = space_.sameWaitHeading(a_, p.heading);
+      if (same != p.heading) return unsafe(graph_.id({p.x, p.y, same}), Action::Wait);
+    }
     const CellSet* extra = next == kNoState ? nullptr : space_.moveExtra(a_, p.heading, action);
     if (extra != nullptr) {
       // The sweep is the body before, the body after and a few cells more: the union of the

@@ -195,7 +195,23 @@ void SearchSpace::makeProbes() {
       e = std::move(x);
     }
     extras_[a] = e;
-
+  }
+  std::unordered_map<const FootprintCells*, std::shared_ptr<const std::array<int, kHeadings>>> same;
+  same_wait_.resize(numAgents());
+  for (int a = 0; a < numAgents(); ++a) {
+    std::shared_ptr<const std::array<int, kHeadings>>& w = same[&cells(a)];
+    if (!w) {
+      auto first = std::make_shared<std::array<int, kHeadings>>();
+      const FootprintCells& fc = cells(a);
+      for (int h = 0; h < kHeadings; ++h) {
+        (*first)[h] = h;
+        for (int g = 0; g < h && (*first)[h] == h; ++g) {
+          if (fc.body(g) == fc.body(h) && fc.swept(g, Action::Wait) == fc.swept(h, Action::Wait)) (*first)[h] = g;
+        }
+      }
+      w = std::move(first);
+    }
+    same_wait_[a] = w;
   }
 }
 

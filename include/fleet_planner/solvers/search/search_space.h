@@ -75,6 +75,11 @@ class SearchSpace {
     return e.decomposes ? &e.cells : nullptr;
   }
 
+  /// The first heading at which agent a's body and its wait's sweep are the cells they are at
+  /// `heading` (a disc: 0 for every heading; a block symmetric about its centre: the same for
+  /// opposite headings): waiting there meets what waiting at `heading` meets.
+  int sameWaitHeading(int a, int heading) const { return (*same_wait_[a])[heading]; }
+
   /// Empty if every agent has a valid start and target connected in its restricted graph;
   /// otherwise why not, naming the first such robot.
   const std::string& problem() const { return problem_; }
@@ -98,6 +103,7 @@ class SearchSpace {
   std::vector<std::shared_ptr<const Probes>> probes_;  // agents with the same cells share them
   using Extras = std::array<std::array<MoveExtra, kActions>, kHeadings>;
   std::vector<std::shared_ptr<const Extras>> extras_;  // shared likewise
+  std::vector<std::shared_ptr<const std::array<int, kHeadings>>> same_wait_;  // likewise
   std::string problem_;
   bool stopped_ = false;
 };
