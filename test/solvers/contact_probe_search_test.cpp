@@ -41,6 +41,16 @@ StateId somewhere(const SearchSpace& space, int a, const std::vector<StatePath>&
   return space.start(a);
 }
 
+// A random walk of up to 10 steps of every agent from its start, each put in `table`.
+std::vector<StatePath> walksInto(SoftPathTable& table, const SearchSpace& space, Rng& rng) {
+  std::vector<StatePath> walks;
+  for (int a = 0; a < space.numAgents(); ++a) {
+    walks.push_back(randomWalk(space, a, static_cast<int>(rng.uniformInt(0, 10)), rng));
+    table.insert(a, walks.back());
+  }
+  return walks;
+}
+
 TEST(ContactProbeSearch, ProbesAreSmallerThanTheSweeps) {
   const World w(freeMap(40, 40), largeRobots());
   const SearchSpace space(allRobots(w));
@@ -95,12 +105,8 @@ TEST(ContactProbeSearch, SoftPathTableFindsEveryContact) {
   Rng rng(3);
   int pairs_seen = 0, unsafe_seen = 0;
   for (int round = 0; round < 150; ++round) {
-    std::vector<StatePath> walks;
     SoftPathTable table(space);
-    for (int a = 0; a < space.numAgents(); ++a) {
-      walks.push_back(randomWalk(space, a, static_cast<int>(rng.uniformInt(0, 10)), rng));
-      table.insert(a, walks.back());
-    }
+    std::vector<StatePath> walks = walksInto(table, space, rng);
     const std::vector<std::pair<int, int>> from_table = partnerPairs(table, space.numAgents());
     ASSERT_EQ(from_table, conflictingPairs(space, walks)) << "round " << round;
     pairs_seen += static_cast<int>(from_table.size());
@@ -214,12 +220,8 @@ TEST(ContactProbeSearch, AMovesUnsafeStepsAreItsBodiesAndItsExtraCells) {
     return out;
   };
   for (int round = 0; round < 150; ++round) {
-    std::vector<StatePath> walks;
     SoftPathTable table(space);
-    for (int a = 0; a < space.numAgents(); ++a) {
-      walks.push_back(randomWalk(space, a, static_cast<int>(rng.uniformInt(0, 10)), rng));
-      table.insert(a, walks.back());
-    }
+    std::vector<StatePath> walks = walksInto(table, space, rng);
     const int a = static_cast<int>(rng.uniformInt(0, space.numAgents() - 1));
     const StateId s = somewhere(space, a, walks, rng);
     const GridPose p = space.graph(a).pose(s);
@@ -254,12 +256,8 @@ TEST(ContactProbeSearch, EndQueriesAgreeWithStepQueries) {
   Rng rng(7);
   int met_seen = 0;
   for (int round = 0; round < 100; ++round) {
-    std::vector<StatePath> walks;
     SoftPathTable table(space);
-    for (int a = 0; a < space.numAgents(); ++a) {
-      walks.push_back(randomWalk(space, a, static_cast<int>(rng.uniformInt(0, 10)), rng));
-      table.insert(a, walks.back());
-    }
+    std::vector<StatePath> walks = walksInto(table, space, rng);
     for (int a = 0; a < space.numAgents(); a += 2) {  // moved: their old ends must be forgotten
       table.remove(a);
       walks[a] = randomWalk(space, a, static_cast<int>(rng.uniformInt(0, 10)), rng);

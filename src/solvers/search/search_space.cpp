@@ -100,7 +100,7 @@ SearchSpace::SearchSpace(const Subproblem& problem, bool distances)
   if (!problem.moving.empty()) {
     reservations_ = ReservationTable(g0.width(), g0.height(), problem.moving, *graphs_, g0.actionModel());
   }
-  makeProbes();
+  makeLookups();
 
   for (int a = 0; a < numAgents(); ++a) {
     const Robot& r = instance_->robots[robots_[a]];
@@ -156,7 +156,7 @@ bool SearchSpace::buildDistances(int a, const Deadline& deadline) {
   return true;
 }
 
-void SearchSpace::makeProbes() {
+void SearchSpace::makeLookups() {
   // The pitch: the side of the largest square every body holds (a sweep holds its start's
   // body), and the reservations' pitch; 1 (every cell) unless every sweep is 4-connected.
   int pitch = reservations_.contactPitch();
@@ -170,48 +170,28 @@ void SearchSpace::makeProbes() {
     }
   }
   pitch = std::max(pitch, 1);
-  std::unordered_map<const FootprintCells*, std::shared_ptr<const Probes>> made;
-  probes_.resize(numAgents());
+  // Agents with the same cells share their lookups.
+  std::unordered_map<const FootprintCells*, std::shared_ptr<const Lookups>> made;
+  lookups_.resize(numAgents());
   for (int a = 0; a < numAgents(); ++a) {
-    std::shared_ptr<const Probes>& probes = made[&cells(a)];
-    if (!probes) {
-      auto p = std::make_shared<Probes>();
-      for (int h = 0; h < kHeadings; ++h) {
-        for (int act = 0; act < kActions; ++act) (*p)[h][act] = contactProbe(cells(a).swept(h, static_cast<Action>(act)), pitch);
-      }
-      probes = std::move(p);
-    }
-    probes_[a] = probes;
-  }
-  std::unordered_map<const FootprintCells*, std::shared_ptr<const Extras>> extras;
-  extras_.resize(numAgents());
-  for (int a = 0; a < numAgents(); ++a) {
-    std::shared_ptr<const Extras>& e = extras[&cells(a)];
-    if (!e) {
-      auto x = std::make_shared<Extras>();
-      for (int h = 0; h < kHeadings; ++h) {
-        for (int act = 0; act < kActions; ++act) (*x)[h][act] = moveExtraOf(cells(a), h, static_cast<Action>(act), probe(a, h, static_cast<Action>(act)));
-      }
-      e = std::move(x);
-    }
-    extras_[a] = e;
-  }
-  std::unordered_map<const FootprintCells*, std::shared_ptr<const std::array<int, kHeadings>>> same;
-  same_wait_.resize(numAgents());
-  for (int a = 0; a < numAgents(); ++a) {
-    std::shared_ptr<const std::array<int, kHeadings>>& w = same[&cells(a)];
-    if (!w) {
-      auto first = std::make_shared<std::array<int, kHeadings>>();
+    std::shared_ptr<const Lookups>& shared = made[&cells(a)];
+    if (!shared) {
+      auto l = std::make_shared<Lookups>();
       const FootprintCells& fc = cells(a);
       for (int h = 0; h < kHeadings; ++h) {
-        (*first)[h] = h;
-        for (int g = 0; g < h && (*first)[h] == h; ++g) {
-          if (fc.body(g) == fc.body(h) && fc.swept(g, Action::Wait) == fc.swept(h, Action::Wait)) (*first)[h] = g;
+        for (int act = 0; act < kActions; ++act) {
+          const Action action = static_cast<Action>(act);
+          l->probes[h][act] = contactProbe(fc.swept(h, action), pitch);
+          l->extras[h][act] = moveExtraOf(fc, h, action, l->probes[h][act]);
+        }
+        l->same_wait[h] = h;
+        for (int g = 0; g < h && l->same_wait[h] == h; ++g) {
+          if (fc.body(g) == fc.body(h) && fc.swept(g, Action::Wait) == fc.swept(h, Action::Wait)) l->same_wait[h] = g;
         }
       }
-      w = std::move(first);
+      shared = std::move(l);
     }
-    same_wait_[a] = w;
+    lookups_[a] = shared;
   }
 }
 

@@ -57,7 +57,7 @@ class SearchSpace {
   /// meets every body or sweep of an agent and every reservation that the sweep meets, so
   /// lookups per cell may read it instead of the sweep.
   const CellSet& probe(int a, int heading, Action action) const {
-    return (*probes_[a])[heading][static_cast<int>(action)];
+    return lookups_[a]->probes[heading][static_cast<int>(action)];
   }
 
   /// The cells of agent a's sweep doing the move `action` from `heading` that lie outside its
@@ -71,14 +71,14 @@ class SearchSpace {
     CellSet cells;
   };
   const CellSet* moveExtra(int a, int heading, Action action) const {
-    const MoveExtra& e = (*extras_[a])[heading][static_cast<int>(action)];
+    const MoveExtra& e = lookups_[a]->extras[heading][static_cast<int>(action)];
     return e.decomposes ? &e.cells : nullptr;
   }
 
   /// The first heading at which agent a's body and its wait's sweep are the cells they are at
   /// `heading` (a disc: 0 for every heading; a block symmetric about its centre: the same for
   /// opposite headings): waiting there meets what waiting at `heading` meets.
-  int sameWaitHeading(int a, int heading) const { return (*same_wait_[a])[heading]; }
+  int sameWaitHeading(int a, int heading) const { return lookups_[a]->same_wait[heading]; }
 
   /// Empty if every agent has a valid start and target connected in its restricted graph;
   /// otherwise why not, naming the first such robot.
@@ -88,8 +88,8 @@ class SearchSpace {
   bool stopped() const { return stopped_; }
 
  private:
-  // Builds probes_ (after reservations_) and extras_.
-  void makeProbes();
+  // Builds lookups_ (after reservations_).
+  void makeLookups();
 
   const Instance* instance_;
   const FleetGraphs* graphs_;
@@ -99,11 +99,14 @@ class SearchSpace {
   std::unique_ptr<ObstacleIndex> static_cells_;
   std::vector<DistanceTable> distances_;
   ReservationTable reservations_;
-  using Probes = std::array<std::array<CellSet, kActions>, kHeadings>;
-  std::vector<std::shared_ptr<const Probes>> probes_;  // agents with the same cells share them
-  using Extras = std::array<std::array<MoveExtra, kActions>, kHeadings>;
-  std::vector<std::shared_ptr<const Extras>> extras_;  // shared likewise
-  std::vector<std::shared_ptr<const std::array<int, kHeadings>>> same_wait_;  // likewise
+  // What an agent's cells give the lookups, per heading (and action): probes, moves' extra
+  // cells, the heading whose wait is the same.
+  struct Lookups {
+    std::array<std::array<CellSet, kActions>, kHeadings> probes;
+    std::array<std::array<MoveExtra, kActions>, kHeadings> extras;
+    std::array<int, kHeadings> same_wait;
+  };
+  std::vector<std::shared_ptr<const Lookups>> lookups_;  // agents with the same cells share them
   std::string problem_;
   bool stopped_ = false;
 };
