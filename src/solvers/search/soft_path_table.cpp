@@ -226,15 +226,6 @@ void SoftPathTable::unsafeRuns(int a, StateId s, Action action,
   for (int b : met_) runs.insert(runs.end(), agent_runs_[b].begin(), agent_runs_[b].end());
 }
 
-void SoftPathTable::markSteps(std::uint64_t* steps, int first, int last) {
-  for (int t = first; t <= last;) {  // whole words at once where the run covers them
-    const int word = t >> 6, bit = t & 63;
-    const int n = std::min(64 - bit, last - t + 1);
-    steps[word] |= (n == 64 ? ~std::uint64_t{0} : ((std::uint64_t{1} << n) - 1) << bit);
-    t += n;
-  }
-}
-
 void SoftPathTable::markUnsafe(int a, StateId s, Action action, std::uint64_t* steps, int& lo, int& hi,
                                int& forever_from, int from) const {
   if (cell_spans_.empty()) return;

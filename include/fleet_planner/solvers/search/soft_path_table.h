@@ -9,6 +9,7 @@
 /// for every later step. Two agents collide during step t when their sweeps share a cell: that
 /// covers the vertex conflicts at t and t + 1 and the transfer conflicts of the step, the model
 /// of agent_conflicts.h and of the validator.
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -64,7 +65,19 @@ class SoftPathTable {
   void spansAt(int a, const CellSet& cells, Cell origin, std::vector<std::pair<int, int>>& runs,
                int& forever_from, int from = 0) const;
   /// Sets the bits of steps first..last (bit t % 64 of steps[t / 64]).
-  static void markSteps(std::uint64_t* steps, int first, int last);
+  static void markSteps(std::uint64_t* steps, int first, int last) {
+    if ((first >> 6) == (last >> 6)) {  // most runs: a few steps within one word
+      const int n = last - first + 1;
+      steps[first >> 6] |= (n == 64 ? ~std::uint64_t{0} : ((std::uint64_t{1} << n) - 1) << (first & 63));
+      return;
+    }
+    for (int t = first; t <= last;) {  // whole words at once where the run covers them
+      const int word = t >> 6, bit = t & 63;
+      const int n = std::min(64 - bit, last - t + 1);
+      steps[word] |= (n == 64 ? ~std::uint64_t{0} : ((std::uint64_t{1} << n) - 1) << bit);
+      t += n;
+    }
+  }
   /// Last step during which some agent in the table moves (every path of length 1: -1).
   int lastMove() const { return last_move_; }
 
