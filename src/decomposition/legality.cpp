@@ -106,7 +106,7 @@ LegalityReport checkLegality(const Instance& instance, const FleetGraphs& graphs
       if (owner[j] < k) markBody(graphs, j, instance.robots[j].target, width, height, blocked);
       if (owner[j] > k) markBody(graphs, j, instance.robots[j].start, width, height, blocked);
     }
-    const ObstacleIndex obstacles(GridMap(width, height, std::move(blocked)));
+    const ObstacleIndex obstacles(GridMap(width, height, std::move(blocked)), ObstacleIndex::Clearance::Chessboard);
 
     for (int i : subproblems[k]) {
       const Robot& robot = instance.robots[i];

@@ -84,8 +84,42 @@ std::vector<std::int64_t> squaredDistanceToBlocked(const GridMap& map) {
   return result;
 }
 
-ObstacleIndex::ObstacleIndex(const GridMap& map)
-    : width_(map.width()), height_(map.height()), clearance_sq_(squaredDistanceToBlocked(map)) {
+std::vector<std::int64_t> squaredChessboardToBlocked(const GridMap& map) {
+  // Two passes over the padded grid, each taking the 8-neighbours already visited + 1: the
+  // exact chessboard distance.
+  const int w = map.width() + 2, h = map.height() + 2;
+  constexpr std::int32_t kNone = std::numeric_limits<std::int32_t>::max() / 2;
+  std::vector<std::int32_t> d(static_cast<std::size_t>(w) * h, kNone);
+  auto at = [&](int x, int y) -> std::int32_t& { return d[static_cast<std::size_t>(y) * w + x]; };
+  for (int y = 0; y < h; ++y) {
+    for (int x = 0; x < w; ++x) {
+      if (x == 0 || y == 0 || x == w - 1 || y == h - 1 || map.blocked(x - 1, y - 1)) at(x, y) = 0;
+    }
+  }
+  for (int y = 1; y < h - 1; ++y) {
+    for (int x = 1; x < w - 1; ++x) {
+      at(x, y) = std::min({at(x, y), at(x - 1, y) + 1, at(x - 1, y - 1) + 1, at(x, y - 1) + 1, at(x + 1, y - 1) + 1});
+    }
+  }
+  for (int y = h - 2; y >= 1; --y) {
+    for (int x = w - 2; x >= 1; --x) {
+      at(x, y) = std::min({at(x, y), at(x + 1, y) + 1, at(x + 1, y + 1) + 1, at(x, y + 1) + 1, at(x - 1, y + 1) + 1});
+    }
+  }
+  std::vector<std::int64_t> result(static_cast<std::size_t>(map.width()) * map.height());
+  for (int y = 0; y < map.height(); ++y) {
+    for (int x = 0; x < map.width(); ++x) {
+      const std::int64_t c = at(x + 1, y + 1);
+      result[static_cast<std::size_t>(y) * map.width() + x] = c * c;
+    }
+  }
+  return result;
+}
+
+ObstacleIndex::ObstacleIndex(const GridMap& map, Clearance clearance)
+    : width_(map.width()),
+      height_(map.height()),
+      clearance_sq_(clearance == Clearance::Euclidean ? squaredDistanceToBlocked(map) : squaredChessboardToBlocked(map)) {
   row_prefix_.assign(static_cast<std::size_t>(width_ + 1) * height_, 0);
   for (int y = 0; y < height_; ++y) {
     std::int32_t* row = &row_prefix_[static_cast<std::size_t>(y) * (width_ + 1)];

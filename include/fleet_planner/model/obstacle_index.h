@@ -15,7 +15,13 @@ namespace fleet_planner {
 
 class ObstacleIndex {
  public:
-  explicit ObstacleIndex(const GridMap& map);
+  /// How the clearance table is made. Euclidean: exact (a distance transform, about 300
+  /// instructions a cell), for a map's walls, where the graphs ask millions of placements.
+  /// Chessboard: the chessboard distance, a lower bound (two integer passes, ten times
+  /// cheaper), for the few footprints of other robots that a subproblem or a legality check
+  /// blocks: most placements are far from all of them either way.
+  enum class Clearance { Euclidean, Chessboard };
+  explicit ObstacleIndex(const GridMap& map, Clearance clearance = Clearance::Euclidean);
 
   /// Squared distance (in cells) from cell (x, y), inside the map, to the nearest blocked cell.
   std::int64_t clearanceSq(int x, int y) const { return clearance_sq_[y * width_ + x]; }
@@ -34,5 +40,9 @@ class ObstacleIndex {
 /// padded by one blocked cell on every side: for each cell, the squared distance to the
 /// nearest blocked cell or to the outside of the map.
 std::vector<std::int64_t> squaredDistanceToBlocked(const GridMap& map);
+
+/// The same padded grid's squared chessboard distance (max(|dx|, |dy|) squared, a lower bound
+/// on the squared Euclidean distance) from each cell to the nearest blocked cell or the outside.
+std::vector<std::int64_t> squaredChessboardToBlocked(const GridMap& map);
 
 }  // namespace fleet_planner

@@ -94,7 +94,8 @@ SearchSpace::SearchSpace(const Subproblem& problem, bool distances)
         if (x >= 0 && y >= 0 && x < g0.width() && y < g0.height()) cells[static_cast<std::size_t>(y) * g0.width() + x] = 1;
       }
     }
-    static_cells_ = std::make_unique<ObstacleIndex>(GridMap(g0.width(), g0.height(), std::move(cells)));
+    static_cells_ = std::make_unique<ObstacleIndex>(GridMap(g0.width(), g0.height(), std::move(cells)),
+                                                    ObstacleIndex::Clearance::Chessboard);
     has_static_ = true;
   }
   if (!problem.moving.empty()) {
