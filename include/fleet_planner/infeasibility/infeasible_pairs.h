@@ -7,10 +7,10 @@
 /// configurations to explore), the search backwards from the pair's goal (pair_goal_search.h)
 /// may still decide it. Most pairs tried are not impossible: a plan of one robot after the
 /// other, found first, shows that in a few single-robot searches (LA-LaCAM may take seconds
-/// to find the manoeuvre on a real map). Used on the decomposition's entangled pairs and on subproblems that
-/// failed, where a knot of robots that no backend unties may be no knot but an impossibility
-/// (e.g. a wide robot whose start and target fill the only corridor that another robot must
-/// cross).
+/// to find the manoeuvre on a real map). Used on the decomposition's entangled pairs and on
+/// subproblems that failed, where a knot of robots that no backend unties may be no knot but an
+/// impossibility (e.g. a wide robot whose start and target fill the only corridor that another
+/// robot must cross).
 #include <optional>
 #include <string>
 #include <utility>

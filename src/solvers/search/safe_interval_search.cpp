@@ -45,7 +45,13 @@ class Sipp {
     const GridPose p = graph_.pose(s);
     if (action == Action::Wait) {  // a disc waits alike at every heading: one answer
       const int same = space_.sameWaitHeading(a_, p.heading);
-      if (same != p.heading) return unsafe(graph_.id({p.x, p.y, same}), Action::Wait);
+      if (same != p.heading) {
+        const StateId alike = graph_.id({p.x, p.y, same});
+        const Unsafe answer = unsafe(alike, Action::Wait);
+        // Kept under this state too: the next ask is one lookup.
+        unsafe_index_.set(k, *unsafe_index_.find(static_cast<std::uint64_t>(alike) * kActions));
+        return answer;
+      }
     }
     const CellSet* extra = next == kNoState ? nullptr : space_.moveExtra(a_, p.heading, action);
     if (extra != nullptr) {
