@@ -8,6 +8,9 @@
 #include <vector>
 
 #include "fleet_planner/model/collision.h"
+#include "fleet_planner/model/plan_validator.h"
+#include "fleet_planner/runtime/errors.h"
+#include "fleet_planner/solvers/search/safe_interval_search.h"
 #include "fleet_planner/solvers/search/soft_path_table.h"
 #include "fleet_planner/solvers/search/space_time_astar.h"
 #include "solver_test_util.h"
@@ -330,6 +333,69 @@ TEST(ContactProbeSearch, ReservationsFindEveryContact) {
     }
   }
   EXPECT_GT(taken_seen, 30);
+}
+
+// The safe interval search reads a move that decomposes from its extra cells alone, its bodies
+// being those of the safe intervals it leaves and enters: it still arrives when space-time A*
+// does, around the same random walks, whether they are in the soft path table or moving
+// obstacles (reservations), for every robot shape.
+TEST(ContactProbeSearch, SafeIntervalsArriveWhenSpaceTimeSearchDoes) {
+  Rng rng(11);
+  int delayed = 0, compared = 0;
+  for (int round = 0; round < 400; ++round) {
+    std::vector<Robot> robots = largeRobots();
+    const int a = static_cast<int>(rng.uniformInt(0, static_cast<std::int64_t>(robots.size()) - 1));
+    std::unique_ptr<World> w;
+    auto anywhere = [&] {
+      return GridPose{static_cast<int>(rng.uniformInt(6, 53)), static_cast<int>(rng.uniformInt(6, 53)),
+                      static_cast<int>(rng.uniformInt(0, kHeadings - 1))};
+    };
+    while (!w) {  // a start and a target anywhere free, clear of the others' (their starts)
+      robots[a].start = anywhere();
+      robots[a].target = anywhere();
+      try {
+        w = std::make_unique<World>(freeMap(60, 60), robots);
+      } catch (const InvalidInput&) {
+      }
+    }
+    const SearchSpace all(allRobots(*w));
+    SoftPathTable table(all);
+    Subproblem alone = allRobots(*w);
+    alone.robots = {a};
+    Instance walked = w->instance;  // the others' targets where their walks end
+    Plan plan;
+    plan.paths.resize(robots.size());
+    for (int b = 0; b < all.numAgents(); ++b) {
+      if (b == a) continue;
+      const StatePath walk = randomWalk(all, b, static_cast<int>(rng.uniformInt(5, 25)), rng);
+      table.insert(b, walk);
+      MovingObstacle m;
+      m.robot = b;
+      for (StateId s : walk) m.path.push_back(all.graph(b).pose(s));
+      plan.paths[b] = m.path;
+      walked.robots[b].target = m.path.back();
+      alone.moving.push_back(m);
+    }
+    const SearchSpace moving(alone);
+    const LowLevelResult best = spaceTimeAStar(moving, 0, AgentConstraints{}, Deadline::in(5.0));
+    const SafeIntervalResult soft = safeIntervalSearch(all, a, table, Deadline::in(5.0), 1'000'000);
+    const SafeIntervalResult reserved =
+        safeIntervalSearch(moving, 0, SoftPathTable(moving), Deadline::in(5.0), 1'000'000);
+    const bool found = best.outcome == LowLevelResult::Outcome::Found;
+    ASSERT_EQ(soft.outcome == SafeIntervalResult::Outcome::Found, found) << "round " << round;
+    ASSERT_EQ(reserved.outcome == SafeIntervalResult::Outcome::Found, found) << "round " << round;
+    if (!found) continue;
+    ASSERT_EQ(soft.path.size(), best.path.size()) << "round " << round << ", " << all.label(a);
+    ASSERT_EQ(reserved.path.size(), best.path.size()) << "round " << round << ", " << all.label(a);
+    for (StateId s : soft.path) plan.paths[a].push_back(all.graph(a).pose(s));
+    // The walks may meet each other: only a's path and its conflicts are checked.
+    const ValidationResult v = validatePlanChanges(w->map, walked, plan, ActionModel{}, {a});
+    ASSERT_TRUE(v.valid()) << "round " << round << ": " << violationName(v.violation.kind);
+    ++compared;
+    delayed += static_cast<int>(best.path.size()) - 1 > all.distance(a, all.start(a)) ? 1 : 0;
+  }
+  EXPECT_GT(compared, 200);
+  EXPECT_GT(delayed, 25);  // the walks were in the way
 }
 
 }  // namespace

@@ -37,9 +37,9 @@ class Sipp {
   Sipp(const SearchSpace& space, int a, const SoftPathTable& others, int from)
       : space_(space), a_(a), others_(others), graph_(space.graph(a)), from_(from) {}
 
-  // Steps from from_ on during which doing `action` from s (to `next`, for a move) collides
-  // with another agent or a moving obstacle.
-  Unsafe unsafe(StateId s, Action action, StateId next = kNoState) {
+  // Steps from from_ on during which doing `action` from s collides with another agent or a
+  // moving obstacle.
+  Unsafe unsafe(StateId s, Action action) {
     const std::uint64_t k = static_cast<std::uint64_t>(s) * kActions + static_cast<int>(action);
     if (const int* known = unsafe_index_.find(k)) return unsafe_[*known];
     const GridPose p = graph_.pose(s);
@@ -53,19 +53,6 @@ class Sipp {
         return answer;
       }
     }
-    const CellSet* extra = next == kNoState ? nullptr : space_.moveExtra(a_, p.heading, action);
-    if (extra != nullptr) {
-      // The sweep is the body before, the body after and a few cells more: the union of the
-      // two bodies' answers (cached, and asked anyway for the safe intervals) and those cells'.
-      const Unsafe before = unsafe(s, Action::Wait), after = unsafe(next, Action::Wait);
-      runs_.assign(before.begin(), before.end());
-      runs_.insert(runs_.end(), after.begin(), after.end());
-      int forever = kNever;
-      others_.spansAt(a_, *extra, {p.x, p.y}, runs_, forever, from_);
-      if (forever != kNever) runs_.emplace_back(forever, kNever);
-      addReservations(*extra, {p.x, p.y});
-      return store(k, kNever, -1);
-    }
     int forever = kNever, lo = kNever, hi = -1;
     if (others_.lastMove() < kSteps) {
       runs_.clear();
@@ -76,6 +63,23 @@ class Sipp {
     if (forever != kNever) runs_.emplace_back(forever, kNever);
     addReservations(space_.probe(a_, p.heading, action), {p.x, p.y});
     return store(k, lo, hi);
+  }
+
+  // Steps from from_ on during which the cells of the move `action` from s outside its two
+  // bodies (SearchSpace::moveExtra, which must decompose it) meet another agent or a moving
+  // obstacle. The move collides during step t iff the body before, the body after or these
+  // cells do; a search departs only within a safe interval of the state it leaves and arrives
+  // within one of the state it enters, so it reads these alone (see searchBetween).
+  Unsafe beyondBodies(StateId s, Action action, const CellSet& extra) {
+    const std::uint64_t k = static_cast<std::uint64_t>(s) * kActions + static_cast<int>(action);
+    if (const int* known = unsafe_index_.find(k)) return unsafe_[*known];
+    const GridPose p = graph_.pose(s);
+    runs_.clear();
+    int forever = kNever;
+    others_.spansAt(a_, extra, {p.x, p.y}, runs_, forever, from_);
+    if (forever != kNever) runs_.emplace_back(forever, kNever);
+    addReservations(extra, {p.x, p.y});
+    return store(k, kNever, -1);
   }
 
   // Appends to runs_ the steps from from_ on during which a moving obstacle covers a cell of
@@ -323,6 +327,13 @@ SafeIntervalResult searchBetween(const SearchSpace& space, int a, const SoftPath
       if (act == Action::Wait || space.distance(a, next) < 0 || !space.allows(a, node.s, act))
         return;
       const PoolRun<Interval> there = sipp.intervals(next);
+      // A move that decomposes (SearchSpace::moveExtra) collides during step t iff waiting at
+      // node.s or at next during t does, or its extra cells meet someone then. Departing at t
+      // within `here` and arriving at t + 1 within there[j] (t + 1 <= there[j].last) leaves
+      // only t = there[j].first - 1 to the body after, always unsafe when it is a step of the
+      // search (the interval begins after an unsafe step): the departures from
+      // there[j].first on, against the extra cells alone.
+      const CellSet* extra = space.moveExtra(a, g.pose(node.s).heading, act);
       Unsafe move;
       bool known = false;  // the move's unsafe steps are read only if some interval of next may be reached
       // The first interval of next that lasts until node.g + 1 (they are sorted and disjoint).
@@ -333,12 +344,12 @@ SafeIntervalResult searchBetween(const SearchSpace& space, int a, const SoftPath
       for (int j = skip; j < static_cast<int>(there.size()); ++j) {
         if (here.last != kNever && there[j].first > here.last + 1) break;
         if (!known) {
-          move = sipp.unsafe(node.s, act, next);
+          move = extra != nullptr ? sipp.beyondBodies(node.s, act, *extra) : sipp.unsafe(node.s, act);
           known = true;
         }
         const int hi = std::min(here.last, there[j].last == kNever ? kNever : there[j].last - 1);
-        const int departure =
-            Sipp::earliestDeparture(move, std::max(node.g, there[j].first - 1), hi);
+        const int earliest = extra != nullptr ? there[j].first : there[j].first - 1;
+        const int departure = Sipp::earliestDeparture(move, std::max(node.g, earliest), hi);
         if (departure >= 0) push(next, j, departure + 1, index);
       }
     });
