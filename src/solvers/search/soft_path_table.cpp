@@ -41,7 +41,7 @@ void SoftPathTable::index(int a, bool on) {
       return;
     }
     std::vector<Span>& spans = cell_spans_[cell];
-    if (last == kNever) countEnd(cell, 1);
+    if (last == kNever) countEnd(cell, a, 1);
     if (!spans.empty() && spans.back().agent == a && spans.back().last == t - 1) {
       spans.back().last = last;
     } else {
@@ -68,7 +68,7 @@ void SoftPathTable::index(int a, bool on) {
   for (int cell : touched) {
     std::vector<Span>& spans = cell_spans_[cell];
     for (const Span& r : spans) {
-      if (r.agent == a && r.last == kNever) countEnd(cell, -1);
+      if (r.agent == a && r.last == kNever) countEnd(cell, a, -1);
     }
     spans.erase(std::remove_if(spans.begin(), spans.end(), [a](const Span& r) { return r.agent == a; }),
                 spans.end());
@@ -84,6 +84,7 @@ void SoftPathTable::insert(int a, const StatePath& path) {
     cell_blocks_.assign(cell_spans_.size(), 0);
     cell_stamp_.assign(cell_spans_.size(), 0);
     end_cells_.assign(cell_spans_.size(), 0);
+    end_agents_.assign(cell_spans_.size(), 0);
     end_squares_x_ = (width_ + kEndSide - 1) / kEndSide;
     end_squares_.assign(static_cast<std::size_t>(end_squares_x_) * ((height_ + kEndSide - 1) / kEndSide), 0);
   }
@@ -133,8 +134,9 @@ void SoftPathTable::collisions(int a, StateId s, Action action, int t,
   });
 }
 
-void SoftPathTable::countEnd(int cell, int delta) {
+void SoftPathTable::countEnd(int cell, int agent, int delta) {
   end_cells_[cell] = static_cast<std::uint16_t>(end_cells_[cell] + delta);
+  end_agents_[cell] += delta * agent;
   const int square = (cell / width_) / kEndSide * end_squares_x_ + (cell % width_) / kEndSide;
   end_squares_[square] = static_cast<std::uint16_t>(end_squares_[square] + delta);
 }
@@ -155,6 +157,10 @@ void SoftPathTable::collisionsAtEnd(int a, StateId s, Action action, std::vector
   stamp_[a] = query_;
   forEachMapCell(probe, {p.x, p.y}, width_, height_, [&](int cell) {
     if (end_cells_[cell] == 0) return;
+    if (end_cells_[cell] == 1) {  // one agent stands there: end_agents_ names it
+      if (firstVisit(end_agents_[cell])) out.push_back(end_agents_[cell]);
+      return;
+    }
     for (const Span& r : cell_spans_[cell]) {
       if (r.last == kNever && firstVisit(r.agent)) out.push_back(r.agent);
     }

@@ -126,7 +126,10 @@ class SoftPathTable {
   static constexpr int kEndSide = 8;
   int end_squares_x_ = 0;
   std::vector<std::uint16_t> end_cells_, end_squares_;
-  void countEnd(int cell, int delta);
+  // Per map cell, the sum of the agents standing there for good: the agent itself when
+  // end_cells_ counts one (the usual case), so that its spans need not be read.
+  std::vector<int> end_agents_;
+  void countEnd(int cell, int agent, int delta);
   mutable std::vector<std::vector<std::pair<int, int>>> agent_runs_;  // unsafeRuns' scratch
   mutable std::vector<int> met_;                                     // its agents
   mutable std::vector<std::uint32_t> stamp_;       // dedup of query results, per agent
