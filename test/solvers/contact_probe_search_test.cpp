@@ -335,6 +335,51 @@ TEST(ContactProbeSearch, ReservationsFindEveryContact) {
   EXPECT_GT(taken_seen, 30);
 }
 
+// What the table keeps from its answers (each cell's steps, markUnsafe) follows the paths taken
+// out and put in: after queries near the walks, some walks out and others in, it answers as a
+// new table of the same walks.
+TEST(ContactProbeSearch, MarkedStepsFollowRemovals) {
+  const World w(freeMap(40, 40), largeRobots());
+  const SearchSpace space(allRobots(w));
+  Rng rng(4);
+  int differ = 0;
+  for (int round = 0; round < 60; ++round) {
+    const int a = static_cast<int>(rng.uniformInt(0, space.numAgents() - 1));
+    SoftPathTable table(space);
+    std::vector<StatePath> walks = walksInto(table, space, rng);
+    table.remove(a);
+    std::vector<StateId> asked;
+    for (int k = 0; k < 20; ++k) asked.push_back(somewhere(space, a, walks, rng));
+    auto answers = [&](const SoftPathTable& t) {
+      std::vector<std::uint64_t> out;
+      for (StateId s : asked) {
+        std::vector<std::uint64_t> bits(static_cast<std::size_t>(t.lastMove() + 2) / 64 + 1, 0);
+        int lo = SoftPathTable::kNever, hi = -1, forever = SoftPathTable::kNever;
+        t.markUnsafe(a, s, Action::Wait, bits.data(), lo, hi, forever, 0);
+        out.insert(out.end(), bits.begin(), bits.end());
+        out.push_back(static_cast<std::uint64_t>(forever));
+      }
+      return out;
+    };
+    const std::vector<std::uint64_t> before = answers(table);
+    for (int b = 0; b < space.numAgents(); ++b) {
+      if (b == a || rng.uniformInt(0, 2) > 0) continue;
+      table.remove(b);
+      if (rng.uniformInt(0, 1) == 0) continue;
+      walks[b] = randomWalk(space, b, static_cast<int>(rng.uniformInt(0, 10)), rng);
+      table.insert(b, walks[b]);
+    }
+    SoftPathTable fresh(space);
+    for (int b = 0; b < space.numAgents(); ++b) {
+      if (table.contains(b)) fresh.insert(b, walks[b]);
+    }
+    const std::vector<std::uint64_t> after = answers(table);
+    ASSERT_EQ(after, answers(fresh)) << "round " << round;
+    differ += after != before ? 1 : 0;
+  }
+  EXPECT_GT(differ, 10);
+}
+
 // The safe interval search reads a move that decomposes from its extra cells alone, its bodies
 // being those of the safe intervals it leaves and enters: it still arrives when space-time A*
 // does, around the same random walks, whether they are in the soft path table or moving

@@ -19,10 +19,18 @@ std::uint64_t SoftPathTable::blockOf(int t) {
   return std::uint64_t{1} << std::min(t / kBlockSteps, 63);
 }
 
-std::uint64_t SoftPathTable::blocksOf(int first, int last) {
-  const int b0 = std::min(first / kBlockSteps, 63), b1 = std::min(last / kBlockSteps, 63);
+namespace {
+
+// Bits b0..b1 of a word (0 <= b0 <= b1 <= 63).
+std::uint64_t bitRange(int b0, int b1) {
   const std::uint64_t upto = b1 == 63 ? ~std::uint64_t{0} : (std::uint64_t{1} << (b1 + 1)) - 1;
   return upto & ~((std::uint64_t{1} << b0) - 1);
+}
+
+}  // namespace
+
+std::uint64_t SoftPathTable::blocksOf(int first, int last) {
+  return bitRange(std::min(first / kBlockSteps, 63), std::min(last / kBlockSteps, 63));
 }
 
 void SoftPathTable::index(int a, bool on) {
@@ -41,6 +49,7 @@ void SoftPathTable::index(int a, bool on) {
       return;
     }
     std::vector<Span>& spans = cell_spans_[cell];
+    if (step_slot_[cell] >= 0) cell_steps_[step_slot_[cell]].stale = true;
     if (last == kNever) countEnd(cell, a, 1);
     if (!spans.empty() && spans.back().agent == a && spans.back().last == t - 1) {
       spans.back().last = last;
@@ -66,6 +75,7 @@ void SoftPathTable::index(int a, bool on) {
   const CellSet& body = space_.cells(a).body(end.heading);
   forEachMapCell(body, {end.x, end.y}, width_, height_, [&](int cell) { span(cell, steps, kNever); });
   for (int cell : touched) {
+    if (step_slot_[cell] >= 0) cell_steps_[step_slot_[cell]].stale = true;
     std::vector<Span>& spans = cell_spans_[cell];
     for (const Span& r : spans) {
       if (r.agent == a && r.last == kNever) countEnd(cell, a, -1);
@@ -85,6 +95,7 @@ void SoftPathTable::insert(int a, const StatePath& path) {
     cell_stamp_.assign(cell_spans_.size(), 0);
     end_cells_.assign(cell_spans_.size(), 0);
     end_agents_.assign(cell_spans_.size(), 0);
+    step_slot_.assign(cell_spans_.size(), -1);
     end_squares_x_ = (width_ + kEndSide - 1) / kEndSide;
     end_squares_.assign(static_cast<std::size_t>(end_squares_x_) * ((height_ + kEndSide - 1) / kEndSide), 0);
   }
@@ -232,9 +243,63 @@ void SoftPathTable::unsafeRuns(int a, StateId s, Action action,
   for (int b : met_) runs.insert(runs.end(), agent_runs_[b].begin(), agent_runs_[b].end());
 }
 
+const SoftPathTable::CellSteps& SoftPathTable::stepsOf(int cell) const {
+  int& slot = step_slot_[cell];
+  if (slot < 0) {
+    slot = static_cast<int>(cell_steps_.size());
+    cell_steps_.emplace_back();
+  }
+  CellSteps& c = cell_steps_[slot];
+  if (!c.stale) return c;
+  c.stale = false;
+  c.first = kNever;
+  c.last = -1;
+  c.forever = kNever;
+  for (const Span& r : cell_spans_[cell]) {
+    if (r.last == kNever) {
+      c.forever = std::min(c.forever, r.first);
+    } else {
+      c.first = std::min(c.first, r.first);
+      c.last = std::max(c.last, r.last);
+    }
+  }
+  c.words.assign(c.last < 0 ? 0 : static_cast<std::size_t>(c.last / 64) + 1, 0);
+  c.used = 0;
+  for (const Span& r : cell_spans_[cell]) {
+    if (r.last == kNever) continue;
+    markSteps(c.words.data(), r.first, r.last);
+    c.used |= bitRange(r.first / 64, r.last / 64);
+  }
+  return c;
+}
+
 void SoftPathTable::markUnsafe(int a, StateId s, Action action, std::uint64_t* steps, int& lo, int& hi,
                                int& forever_from, int from) const {
   if (cell_spans_.empty()) return;
+  if (!contains(a) && lastMove() < 64 * 64) {
+    // Nobody to leave out: each cell's steps as a bitset, built when first asked after the
+    // cell's spans changed and read a word at a time, only the words that have steps
+    // (neighbouring states' probes share most of their cells).
+    const GridPose p = space_.graph(a).pose(s);
+    const int first_word = from / 64;
+    const std::uint64_t first_mask = ~std::uint64_t{0} << (from % 64);
+    const std::uint64_t from_word_on = first_word >= 64 ? 0 : ~std::uint64_t{0} << first_word;
+    forEachMapCell(space_.probe(a, p.heading, action), {p.x, p.y}, width_, height_, [&](int cell) {
+      if (cell_spans_[cell].empty()) return;
+      const CellSteps& c = stepsOf(cell);
+      forever_from = std::min(forever_from, c.forever);
+      std::uint64_t used = c.used & from_word_on;
+      if (used == 0) return;
+      while (used != 0) {
+        const int w = __builtin_ctzll(used);
+        used &= used - 1;
+        steps[w] |= c.words[w] & (w == first_word ? first_mask : ~std::uint64_t{0});
+      }
+      lo = std::min(lo, std::max(c.first, from));
+      hi = std::max(hi, c.last);
+    });
+    return;
+  }
   // Repeats from neighbouring cells cost a few word operations each: no bookkeeping per agent.
   forOtherSpans(a, s, action, from, forever_from, [&](int, int first, int last) {
     lo = std::min(lo, first);

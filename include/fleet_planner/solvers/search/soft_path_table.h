@@ -130,6 +130,20 @@ class SoftPathTable {
   // end_cells_ counts one (the usual case), so that its spans need not be read.
   std::vector<int> end_agents_;
   void countEnd(int cell, int agent, int delta);
+  // The steps during which a cell is swept by spans that end, as a bitset (bit t % 64 of
+  // words[t / 64]; first..last: the steps they cover, none if last < 0) whose nonzero words are
+  // the bits of `used`, and the first step from which someone stands there for good (kNever:
+  // none); rebuilt from the spans when asked after they changed (stale). Kept only for the
+  // cells markUnsafe has read (horizons of at most 64 words), by slot.
+  struct CellSteps {
+    std::vector<std::uint64_t> words;
+    std::uint64_t used = 0;
+    int first = kNever, last = -1, forever = kNever;
+    bool stale = true;
+  };
+  const CellSteps& stepsOf(int cell) const;
+  mutable std::vector<int> step_slot_;  // per map cell, its CellSteps' index; -1 none yet
+  mutable std::vector<CellSteps> cell_steps_;
   mutable std::vector<std::vector<std::pair<int, int>>> agent_runs_;  // unsafeRuns' scratch
   mutable std::vector<int> met_;                                     // its agents
   mutable std::vector<std::uint32_t> stamp_;       // dedup of query results, per agent
