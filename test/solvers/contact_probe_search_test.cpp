@@ -8,51 +8,14 @@
 #include <vector>
 
 #include "fleet_planner/model/collision.h"
-#include "fleet_planner/model/plan_validator.h"
-#include "fleet_planner/runtime/errors.h"
-#include "fleet_planner/solvers/search/safe_interval_search.h"
 #include "fleet_planner/solvers/search/soft_path_table.h"
 #include "fleet_planner/solvers/search/space_time_astar.h"
+#include "large_robot_walks.h"
 #include "solver_test_util.h"
 #include "test_maps.h"
 
 namespace fleet_planner::test {
 namespace {
-
-// Robots of 4-11 cells across (real robots on a 5 cm map are 6-20) close together on a 40 x 40
-// map, so that random walks from there meet. The small disc fits inside the others' sweeps.
-std::vector<Robot> largeRobots() {
-  const Footprint nose = Footprint::polygon({{-3.5, -3.5}, {-3.5, 3.5}, {3.5, 3.5}, {5.0, 0.0}, {3.5, -3.5}});
-  return {makeRobot("disc", Footprint::circle(3.0), {14, 14, 0}, {14, 14, 0}),
-          makeRobot("block", Footprint::block(-4.9, -2.9, 4.9, 2.9), {24, 14, 2}, {24, 14, 2}),
-          makeRobot("nose", nose, {14, 24, 1}, {14, 24, 1}),
-          makeRobot("wide", Footprint::block(-4.9, -3.4, 4.9, 3.4), {24, 24, 3}, {24, 24, 3}),
-          makeRobot("small", Footprint::circle(1.5), {19, 19, 0}, {19, 19, 0})};
-}
-
-// A random state of agent a near the others: a few cells from a random pose of their walks (in
-// `space`, which has every robot), any heading.
-StateId somewhere(const SearchSpace& space, int a, const std::vector<StatePath>& walks, Rng& rng) {
-  for (int tries = 0; tries < 100; ++tries) {
-    const int b = static_cast<int>(rng.uniformInt(0, static_cast<std::int64_t>(walks.size()) - 1));
-    const StatePath& w = walks[b];
-    const GridPose p = space.graph(b).pose(w[rng.uniformInt(0, static_cast<std::int64_t>(w.size()) - 1)]);
-    const int x = p.x + static_cast<int>(rng.uniformInt(-3, 3)), y = p.y + static_cast<int>(rng.uniformInt(-3, 3));
-    const StateId s = space.graph(a).id({x, y, static_cast<int>(rng.uniformInt(0, kHeadings - 1))});
-    if (s != kNoState && space.distance(a, s) >= 0) return s;
-  }
-  return space.start(a);
-}
-
-// A random walk of up to 10 steps of every agent from its start, each put in `table`.
-std::vector<StatePath> walksInto(SoftPathTable& table, const SearchSpace& space, Rng& rng) {
-  std::vector<StatePath> walks;
-  for (int a = 0; a < space.numAgents(); ++a) {
-    walks.push_back(randomWalk(space, a, static_cast<int>(rng.uniformInt(0, 10)), rng));
-    table.insert(a, walks.back());
-  }
-  return walks;
-}
 
 TEST(ContactProbeSearch, ProbesAreSmallerThanTheSweeps) {
   const World w(freeMap(40, 40), largeRobots());
@@ -141,15 +104,6 @@ TEST(ContactProbeSearch, SoftPathTableFindsEveryContact) {
   }
   EXPECT_GT(pairs_seen, 30);
   EXPECT_GT(unsafe_seen, 30);
-}
-
-// The pose after a move of agent a from s (its graph's successor).
-StateId after(const SearchSpace& space, int a, StateId s, Action action) {
-  StateId next = kNoState;
-  space.graph(a).forEachSuccessor(s, [&](Action act, StateId n) {
-    if (act == action) next = n;
-  });
-  return next;
 }
 
 // A move's sweep is its body before, its body after and the extra cells (SearchSpace::moveExtra),
@@ -333,114 +287,6 @@ TEST(ContactProbeSearch, ReservationsFindEveryContact) {
     }
   }
   EXPECT_GT(taken_seen, 30);
-}
-
-// What the table keeps from its answers (each cell's steps, markUnsafe) follows the paths taken
-// out and put in: after queries near the walks, some walks out and others in, it answers as a
-// new table of the same walks.
-TEST(ContactProbeSearch, MarkedStepsFollowRemovals) {
-  const World w(freeMap(40, 40), largeRobots());
-  const SearchSpace space(allRobots(w));
-  Rng rng(4);
-  int differ = 0;
-  for (int round = 0; round < 60; ++round) {
-    const int a = static_cast<int>(rng.uniformInt(0, space.numAgents() - 1));
-    SoftPathTable table(space);
-    std::vector<StatePath> walks = walksInto(table, space, rng);
-    table.remove(a);
-    std::vector<StateId> asked;
-    for (int k = 0; k < 20; ++k) asked.push_back(somewhere(space, a, walks, rng));
-    auto answers = [&](const SoftPathTable& t) {
-      std::vector<std::uint64_t> out;
-      for (StateId s : asked) {
-        std::vector<std::uint64_t> bits(static_cast<std::size_t>(t.lastMove() + 2) / 64 + 1, 0);
-        int lo = SoftPathTable::kNever, hi = -1, forever = SoftPathTable::kNever;
-        t.markUnsafe(a, s, Action::Wait, bits.data(), lo, hi, forever, 0);
-        out.insert(out.end(), bits.begin(), bits.end());
-        out.push_back(static_cast<std::uint64_t>(forever));
-      }
-      return out;
-    };
-    const std::vector<std::uint64_t> before = answers(table);
-    for (int b = 0; b < space.numAgents(); ++b) {
-      if (b == a || rng.uniformInt(0, 2) > 0) continue;
-      table.remove(b);
-      if (rng.uniformInt(0, 1) == 0) continue;
-      walks[b] = randomWalk(space, b, static_cast<int>(rng.uniformInt(0, 10)), rng);
-      table.insert(b, walks[b]);
-    }
-    SoftPathTable fresh(space);
-    for (int b = 0; b < space.numAgents(); ++b) {
-      if (table.contains(b)) fresh.insert(b, walks[b]);
-    }
-    const std::vector<std::uint64_t> after = answers(table);
-    ASSERT_EQ(after, answers(fresh)) << "round " << round;
-    differ += after != before ? 1 : 0;
-  }
-  EXPECT_GT(differ, 10);
-}
-
-// The safe interval search reads a move that decomposes from its extra cells alone, its bodies
-// being those of the safe intervals it leaves and enters: it still arrives when space-time A*
-// does, around the same random walks, whether they are in the soft path table or moving
-// obstacles (reservations), for every robot shape.
-TEST(ContactProbeSearch, SafeIntervalsArriveWhenSpaceTimeSearchDoes) {
-  Rng rng(11);
-  int delayed = 0, compared = 0;
-  for (int round = 0; round < 400; ++round) {
-    std::vector<Robot> robots = largeRobots();
-    const int a = static_cast<int>(rng.uniformInt(0, static_cast<std::int64_t>(robots.size()) - 1));
-    std::unique_ptr<World> w;
-    auto anywhere = [&] {
-      return GridPose{static_cast<int>(rng.uniformInt(6, 53)), static_cast<int>(rng.uniformInt(6, 53)),
-                      static_cast<int>(rng.uniformInt(0, kHeadings - 1))};
-    };
-    while (!w) {  // a start and a target anywhere free, clear of the others' (their starts)
-      robots[a].start = anywhere();
-      robots[a].target = anywhere();
-      try {
-        w = std::make_unique<World>(freeMap(60, 60), robots);
-      } catch (const InvalidInput&) {
-      }
-    }
-    const SearchSpace all(allRobots(*w));
-    SoftPathTable table(all);
-    Subproblem alone = allRobots(*w);
-    alone.robots = {a};
-    Instance walked = w->instance;  // the others' targets where their walks end
-    Plan plan;
-    plan.paths.resize(robots.size());
-    for (int b = 0; b < all.numAgents(); ++b) {
-      if (b == a) continue;
-      const StatePath walk = randomWalk(all, b, static_cast<int>(rng.uniformInt(5, 25)), rng);
-      table.insert(b, walk);
-      MovingObstacle m;
-      m.robot = b;
-      for (StateId s : walk) m.path.push_back(all.graph(b).pose(s));
-      plan.paths[b] = m.path;
-      walked.robots[b].target = m.path.back();
-      alone.moving.push_back(m);
-    }
-    const SearchSpace moving(alone);
-    const LowLevelResult best = spaceTimeAStar(moving, 0, AgentConstraints{}, Deadline::in(5.0));
-    const SafeIntervalResult soft = safeIntervalSearch(all, a, table, Deadline::in(5.0), 1'000'000);
-    const SafeIntervalResult reserved =
-        safeIntervalSearch(moving, 0, SoftPathTable(moving), Deadline::in(5.0), 1'000'000);
-    const bool found = best.outcome == LowLevelResult::Outcome::Found;
-    ASSERT_EQ(soft.outcome == SafeIntervalResult::Outcome::Found, found) << "round " << round;
-    ASSERT_EQ(reserved.outcome == SafeIntervalResult::Outcome::Found, found) << "round " << round;
-    if (!found) continue;
-    ASSERT_EQ(soft.path.size(), best.path.size()) << "round " << round << ", " << all.label(a);
-    ASSERT_EQ(reserved.path.size(), best.path.size()) << "round " << round << ", " << all.label(a);
-    for (StateId s : soft.path) plan.paths[a].push_back(all.graph(a).pose(s));
-    // The walks may meet each other: only a's path and its conflicts are checked.
-    const ValidationResult v = validatePlanChanges(w->map, walked, plan, ActionModel{}, {a});
-    ASSERT_TRUE(v.valid()) << "round " << round << ": " << violationName(v.violation.kind);
-    ++compared;
-    delayed += static_cast<int>(best.path.size()) - 1 > all.distance(a, all.start(a)) ? 1 : 0;
-  }
-  EXPECT_GT(compared, 200);
-  EXPECT_GT(delayed, 25);  // the walks were in the way
 }
 
 }  // namespace

@@ -153,10 +153,12 @@ void SoftPathTable::countEnd(int cell, int agent, int delta) {
 }
 
 void SoftPathTable::collisionsAtEnd(int a, StateId s, Action action, std::vector<int>& out) const {
-  if (cell_spans_.empty()) return;
   const GridPose p = space_.graph(a).pose(s);
-  const CellSet& probe = space_.probe(a, p.heading, action);
-  if (probe.empty()) return;
+  collisionsAtEnd(a, space_.probe(a, p.heading, action), {p.x, p.y}, out);
+}
+
+void SoftPathTable::collisionsAtEnd(int a, const CellSet& probe, Cell p, std::vector<int>& out) const {
+  if (cell_spans_.empty() || probe.empty()) return;
   const int x0 = std::max(p.x + probe.minX(), 0) / kEndSide, x1 = std::min(p.x + probe.maxX(), width_ - 1) / kEndSide;
   const int y0 = std::max(p.y + probe.minY(), 0) / kEndSide, y1 = std::min(p.y + probe.maxY(), height_ - 1) / kEndSide;
   bool any = false;

@@ -38,6 +38,8 @@ class SoftPathTable {
   /// doing `action` from s, each once, appended to `out`: collisions() at step lastMove() + 1,
   /// answered from the cells where robots stand for good (most of a map has none).
   void collisionsAtEnd(int a, StateId s, Action action, std::vector<int>& out) const;
+  /// The same for the cells of `cells` placed at `origin` (any cells: not a probe).
+  void collisionsAtEnd(int a, const CellSet& cells, Cell origin, std::vector<int>& out) const;
   /// Agents in the table other than a that collide with a standing at s during some step t or
   /// later, each once, appended to `out`.
   void collisionsHolding(int a, StateId s, int t, std::vector<int>& out) const;
