@@ -98,7 +98,7 @@ TEST(SearchLookups, MarkedStepsFollowRemovals) {
 // The safe interval search reads a move that decomposes from its extra cells alone, its bodies
 // being those of the safe intervals it leaves and enters: it still arrives when space-time A*
 // does, around the same random walks, whether they are in the soft path table or moving
-// obstacles (reservations), for every robot shape.
+// obstacles (reservations), for every robot shape; and a search asked again answers alike.
 TEST(SearchLookups, SafeIntervalsArriveWhenSpaceTimeSearchDoes) {
   Rng rng(11);
   int delayed = 0, compared = 0;
@@ -141,6 +141,10 @@ TEST(SearchLookups, SafeIntervalsArriveWhenSpaceTimeSearchDoes) {
     const SafeIntervalResult soft = safeIntervalSearch(all, a, table, Deadline::in(5.0), 1'000'000);
     const SafeIntervalResult reserved =
         safeIntervalSearch(moving, 0, SoftPathTable(moving), Deadline::in(5.0), 1'000'000);
+    // Asked again after another search on this thread (which reuses its memory): the same.
+    const SafeIntervalResult again = safeIntervalSearch(all, a, table, Deadline::in(5.0), 1'000'000);
+    ASSERT_EQ(again.outcome, soft.outcome) << "round " << round;
+    ASSERT_EQ(again.path, soft.path) << "round " << round;
     const bool found = best.outcome == LowLevelResult::Outcome::Found;
     ASSERT_EQ(soft.outcome == SafeIntervalResult::Outcome::Found, found) << "round " << round;
     ASSERT_EQ(reserved.outcome == SafeIntervalResult::Outcome::Found, found) << "round " << round;

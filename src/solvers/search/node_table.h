@@ -19,6 +19,14 @@ class NodeTable {
       if (slots_[i].second < 0) return nullptr;
     }
   }
+  /// Empties the table, keeping its allocation: costs the entries set since the last clear.
+  void clear() {
+    for (std::uint32_t i : used_) slots_[i] = {~0ULL, -1};
+    used_.clear();
+    size_ = 0;
+  }
+  /// Bytes held.
+  std::size_t bytes() const { return slots_.capacity() * sizeof(slots_[0]) + used_.capacity() * sizeof(used_[0]); }
   void set(std::uint64_t key, int node) {
     if (int* existing = find(key)) {
       *existing = node;
@@ -35,15 +43,18 @@ class NodeTable {
     std::size_t i = slot(key);
     while (slots_[i].second >= 0) i = (i + 1) & (slots_.size() - 1);
     slots_[i] = {key, node};
+    used_.push_back(static_cast<std::uint32_t>(i));
   }
   void grow() {
     std::vector<std::pair<std::uint64_t, int>> old(slots_.size() * 2, {~0ULL, -1});
     old.swap(slots_);
+    used_.clear();
     for (const auto& [key, node] : old) {
       if (node >= 0) place(key, node);
     }
   }
   std::vector<std::pair<std::uint64_t, int>> slots_;
+  std::vector<std::uint32_t> used_;  // the slots set, for clear()
   std::size_t size_ = 0;
 };
 

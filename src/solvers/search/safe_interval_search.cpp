@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cstdlib>
-#include <queue>
+#include <memory>
 
 #include "node_table.h"
 #include "stable_pool.h"
@@ -30,12 +30,73 @@ struct Node {
   int parent;
 };
 
+// What a search allocates, kept from one search to the next on the same thread: a parking
+// plan makes thousands of searches, and allocating and first touching their memory anew each
+// time cost about a tenth of its time.
+struct SearchMemory {
+  // Sipp's answers so far, by (state, action) and by state: indices into unsafe and intervals.
+  NodeTable unsafe_index, intervals_index;
+  std::vector<Unsafe> unsafe;
+  std::vector<PoolRun<Interval>> intervals;
+  StablePool<std::pair<int, int>> run_pool;
+  StablePool<Interval> interval_pool;
+  std::vector<std::pair<int, int>> merged, runs;  // Sipp's scratch
+  std::vector<Interval> interval_scratch;
+  // searchBetween's nodes, (state, interval) -> node, and open list (a heap of node indices).
+  std::vector<Node> nodes;
+  NodeTable best;
+  std::vector<int> open;
+
+  void clear() {
+    unsafe_index.clear();
+    intervals_index.clear();
+    best.clear();
+    unsafe.clear();
+    intervals.clear();
+    run_pool.clear();
+    interval_pool.clear();
+    nodes.clear();
+    open.clear();
+  }
+  std::size_t bytes() const {
+    return unsafe_index.bytes() + intervals_index.bytes() + best.bytes() + run_pool.bytes() +
+           interval_pool.bytes() + unsafe.capacity() * sizeof(Unsafe) +
+           intervals.capacity() * sizeof(PoolRun<Interval>) + nodes.capacity() * sizeof(Node) +
+           open.capacity() * sizeof(int);
+  }
+};
+
+// The thread's SearchMemory for one search, cleared; a new one if the thread's is taken (or
+// was dropped). Kept for the thread's next search unless it grew past kKeptBytes.
+class MemoryLease {
+ public:
+  MemoryLease() : held_(idle_ ? std::move(idle_) : std::make_unique<SearchMemory>()) { held_->clear(); }
+  ~MemoryLease() {
+    if (!idle_ && held_->bytes() <= kKeptBytes) idle_ = std::move(held_);
+  }
+  MemoryLease(const MemoryLease&) = delete;
+  MemoryLease& operator=(const MemoryLease&) = delete;
+  SearchMemory& memory() { return *held_; }
+
+ private:
+  static constexpr std::size_t kKeptBytes = std::size_t{16} << 20;
+  std::unique_ptr<SearchMemory> held_;
+  static thread_local std::unique_ptr<SearchMemory> idle_;
+};
+
+thread_local std::unique_ptr<SearchMemory> MemoryLease::idle_;
+
 class Sipp {
  public:
   // A search from step `from` on: the steps before it are left out of every answer (counted
-  // safe), so that the passes of the others before it cost nothing.
-  Sipp(const SearchSpace& space, int a, const SoftPathTable& others, int from)
-      : space_(space), a_(a), others_(others), graph_(space.graph(a)), from_(from) {}
+  // safe), so that the passes of the others before it cost nothing. Its answers are kept in
+  // `memory` (cleared).
+  Sipp(const SearchSpace& space, int a, const SoftPathTable& others, int from, SearchMemory& memory)
+      : space_(space), a_(a), others_(others), graph_(space.graph(a)), from_(from),
+        unsafe_index_(memory.unsafe_index), intervals_index_(memory.intervals_index),
+        unsafe_(memory.unsafe), intervals_(memory.intervals), run_pool_(memory.run_pool),
+        interval_pool_(memory.interval_pool), merged_(memory.merged),
+        interval_scratch_(memory.interval_scratch), runs_(memory.runs) {}
 
   // Steps from from_ on during which doing `action` from s collides with another agent or a
   // moving obstacle.
@@ -220,15 +281,16 @@ class Sipp {
   const SoftPathTable& others_;
   const StateGraph& graph_;
   const int from_;
-  // The answers so far, by (state, action) and by state: indices into unsafe_ and intervals_.
-  NodeTable unsafe_index_, intervals_index_;
-  std::vector<Unsafe> unsafe_;
-  std::vector<PoolRun<Interval>> intervals_;
-  StablePool<std::pair<int, int>> run_pool_;
-  StablePool<Interval> interval_pool_;
-  std::vector<std::pair<int, int>> merged_;  // scratch
-  std::vector<Interval> interval_scratch_;   // scratch
-  std::vector<std::pair<int, int>> runs_;  // scratch
+  // The answers so far, by (state, action) and by state: indices into unsafe_ and intervals_
+  // (SearchMemory).
+  NodeTable &unsafe_index_, &intervals_index_;
+  std::vector<Unsafe>& unsafe_;
+  std::vector<PoolRun<Interval>>& intervals_;
+  StablePool<std::pair<int, int>>& run_pool_;
+  StablePool<Interval>& interval_pool_;
+  std::vector<std::pair<int, int>>& merged_;    // scratch
+  std::vector<Interval>& interval_scratch_;     // scratch
+  std::vector<std::pair<int, int>>& runs_;      // scratch
   static constexpr int kSteps = 4096;          // steps of the bitset of unionOf
   std::array<std::uint64_t, kSteps / 64> steps_{};  // unionOf's bitset, all clear between calls
 };
@@ -256,7 +318,9 @@ SafeIntervalResult searchBetween(const SearchSpace& space, int a, const SoftPath
   const StateGraph& g = space.graph(a);
   if (space.distance(a, from) < 0) return result;
   const bool forever = t1 == kNever;
-  Sipp sipp(space, a, others, t0);
+  MemoryLease lease;
+  SearchMemory& memory = lease.memory();
+  Sipp sipp(space, a, others, t0, memory);
   const PoolRun<Interval> first = sipp.intervals(from);
   int first_interval = -1;
   for (int i = 0; i < static_cast<int>(first.size()) && first_interval < 0; ++i) {
@@ -267,8 +331,8 @@ SafeIntervalResult searchBetween(const SearchSpace& space, int a, const SoftPath
   auto heuristic = [&](StateId s) {
     return forever ? space.distance(a, s) : stepsBetween(g, s, goal);
   };
-  std::vector<Node> nodes;
-  NodeTable best;  // (state, interval) -> node
+  std::vector<Node>& nodes = memory.nodes;
+  NodeTable& best = memory.best;  // (state, interval) -> node
   auto key = [](StateId s, int i) {
     return (static_cast<std::uint64_t>(i) << 32) | static_cast<std::uint32_t>(s);
   };
@@ -278,7 +342,7 @@ SafeIntervalResult searchBetween(const SearchSpace& space, int a, const SoftPath
     if (p.g != q.g) return p.g < q.g;
     return x > y;
   };
-  std::priority_queue<int, std::vector<int>, decltype(worse)> open(worse);
+  std::vector<int>& open = memory.open;  // a heap: the node to expand next in front
   auto push = [&](StateId s, int interval, int arrival, int parent) {
     const int h = heuristic(s);
     if (arrival + h > (forever ? max_arrival : t1 + max_delay)) return;  // cannot reach the goal in time
@@ -288,7 +352,8 @@ SafeIntervalResult searchBetween(const SearchSpace& space, int a, const SoftPath
     if (known != nullptr && nodes[*known].g <= arrival) return;
     best.set(k, static_cast<int>(nodes.size()));
     nodes.push_back({s, interval, arrival, f, parent});
-    open.push(static_cast<int>(nodes.size()) - 1);
+    open.push_back(static_cast<int>(nodes.size()) - 1);
+    std::push_heap(open.begin(), open.end(), worse);
   };
   push(from, first_interval, t0, -1);
 
@@ -301,8 +366,9 @@ SafeIntervalResult searchBetween(const SearchSpace& space, int a, const SoftPath
       result.outcome = SafeIntervalResult::Outcome::NodeLimit;
       return result;
     }
-    const int index = open.top();
-    open.pop();
+    const int index = open.front();
+    std::pop_heap(open.begin(), open.end(), worse);
+    open.pop_back();
     const Node node = nodes[index];
     if (*best.find(key(node.s, node.interval)) != index) continue;
     ++result.expansions;

@@ -6,7 +6,7 @@
 
 namespace fleet_planner {
 
-/// A run of T stored in a StablePool: valid as long as the pool.
+/// A run of T stored in a StablePool: valid until the pool is cleared or destroyed.
 template <class T>
 struct PoolRun {
   const T* data = nullptr;
@@ -26,21 +26,40 @@ class StablePool {
  public:
   PoolRun<T> add(const std::vector<T>& items) {
     const int n = static_cast<int>(items.size());
-    if (chunks_.empty() || used_ + n > capacity_) {
-      capacity_ = std::max(kChunk, n);
-      chunks_.push_back(std::make_unique<T[]>(static_cast<std::size_t>(capacity_)));
+    // The chunk being filled, else the next one kept from before a clear() that holds the
+    // items, else a new one.
+    while (current_ < chunks_.size() && used_ + n > capacities_[current_]) {
+      ++current_;
       used_ = 0;
     }
-    T* at = chunks_.back().get() + used_;
+    if (current_ == chunks_.size()) {
+      capacities_.push_back(std::max(kChunk, n));
+      chunks_.push_back(std::make_unique<T[]>(static_cast<std::size_t>(capacities_.back())));
+      used_ = 0;
+    }
+    T* at = chunks_[current_].get() + used_;
     std::copy(items.begin(), items.end(), at);
     used_ += n;
     return {at, n};
+  }
+  /// Forgets every run (they become invalid), keeping the chunks for the next ones.
+  void clear() {
+    current_ = 0;
+    used_ = 0;
+  }
+  /// Bytes held.
+  std::size_t bytes() const {
+    std::size_t n = 0;
+    for (int c : capacities_) n += static_cast<std::size_t>(c) * sizeof(T);
+    return n;
   }
 
  private:
   static constexpr int kChunk = 1 << 14;
   std::vector<std::unique_ptr<T[]>> chunks_;
-  int used_ = 0, capacity_ = 0;
+  std::vector<int> capacities_;
+  std::size_t current_ = 0;
+  int used_ = 0;
 };
 
 }  // namespace fleet_planner
