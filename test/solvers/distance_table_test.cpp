@@ -1,10 +1,16 @@
-// Distance tables (distance_table.h): 2-byte storage gives back every distance it was given.
+// Distance tables (distance_table.h): 2-byte storage gives back every distance it was given;
+// a search space builds them alike on one thread or several.
 #include "fleet_planner/solvers/search/distance_table.h"
+#include "fleet_planner/solvers/search/search_space.h"
 
 #include <gtest/gtest.h>
 
 #include <cstdint>
+#include <string>
 #include <vector>
+
+#include "solver_test_util.h"
+#include "test_maps.h"
 
 namespace fleet_planner {
 namespace {
@@ -37,3 +43,41 @@ TEST(DistanceTable, ADistanceOf65535StepsOrMoreTakesFourBytes) {
 
 }  // namespace
 }  // namespace fleet_planner
+
+namespace fleet_planner::test {
+namespace {
+
+// A search space's distance tables are built on several threads: the same tables, and the same
+// problem (the first robot, in order, whose target cannot be reached) as on one.
+TEST(SearchSpaceDistances, SeveralThreadsBuildWhatOneBuilds) {
+  const GridMap map = mapFromRows({"..........",
+                                   "....@.....",
+                                   "....@.....",
+                                   "....@.....",
+                                   "....@....."});
+  // Targets across the wall for r2 and r4: reachable through the gap in the first row, and
+  // not once the wall is closed.
+  const std::vector<Robot> robots = {dot("r0", {0, 0, 0}, {3, 4, 1}), dot("r1", {1, 0, 0}, {2, 4, 1}),
+                                     dot("r2", {2, 0, 0}, {7, 2, 1}), dot("r3", {3, 0, 0}, {0, 4, 1}),
+                                     dot("r4", {0, 2, 0}, {8, 3, 1}), dot("r5", {1, 2, 0}, {3, 2, 1})};
+  for (bool walled_in : {false, true}) {
+    GridMap m = map;
+    if (walled_in) m = mapFromRows({"....@.....", "....@.....", "....@.....", "....@.....", "....@....."});
+    const World w(m, robots);
+    Subproblem one = allRobots(w), two = allRobots(w);
+    two.threads = 2;
+    const SearchSpace a(one), b(two);
+    EXPECT_EQ(a.problem(), b.problem());
+    if (walled_in) {
+      EXPECT_NE(a.problem().find("'r2'"), std::string::npos) << "[" << a.problem() << "]";
+      continue;
+    }
+    ASSERT_TRUE(a.problem().empty()) << a.problem();
+    for (int r = 0; r < a.numAgents(); ++r) {
+      for (StateId s = 0; s < a.graph(r).stateIdCount(); ++s) ASSERT_EQ(a.distance(r, s), b.distance(r, s));
+    }
+  }
+}
+
+}  // namespace
+}  // namespace fleet_planner::test

@@ -1,6 +1,8 @@
 #include "fleet_planner/solvers/search/search_space.h"
 
+#include <atomic>
 #include <set>
+#include <thread>
 #include <unordered_map>
 
 #include "fleet_planner/model/contact_probe.h"
@@ -120,32 +122,46 @@ SearchSpace::SearchSpace(const Subproblem& problem, bool distances)
                        1048576.0,
                    "the distance tables of " + std::to_string(numAgents()) + " robots");
   }
-  std::vector<std::int32_t> steps;  // one agent's table as the search fills it
-  for (int a = 0; a < numAgents() && problem_.empty(); ++a) {
-    if (distances && problem.deadline.expired()) {  // one table per agent: on large maps and fleets, seconds
-      stopped_ = true;
-      return;
+  // The first agent (in order) with a start or target that is not a valid free state; the
+  // distance tables of the agents before it (when asked for), on `problem.threads` threads; the
+  // first of those whose target cannot be reached from its start, if any, else that agent, is
+  // the problem: what one agent after the other would find.
+  int invalid = numAgents();
+  for (int a = 0; a < numAgents() && invalid == numAgents(); ++a) {
+    const std::string why = endpointProblem(a);
+    if (!why.empty()) {
+      invalid = a;
+      problem_ = why;
     }
-    GridPose start = instance_->robots[robots_[a]].start, target = instance_->robots[robots_[a]].target;
-    if (graph(a).valid(starts_[a])) start = graph(a).pose(starts_[a]);
-    if (graph(a).valid(targets_[a])) target = graph(a).pose(targets_[a]);
-    if (!graph(a).valid(starts_[a])) {
-      problem_ = label(a) + ": start " + toString(start) + " is not a valid state";
-    } else if (!graph(a).valid(targets_[a])) {
-      problem_ = label(a) + ": target " + toString(target) + " is not a valid state";
-    } else if (!allows(a, starts_[a], Action::Wait)) {
-      problem_ = label(a) + ": start " + toString(start) + " overlaps a footprint of another subproblem";
-    } else if (!allows(a, targets_[a], Action::Wait)) {
-      problem_ = label(a) + ": target " + toString(target) + " overlaps a footprint of another subproblem";
-    } else if (distances) {
-      if (!restrictedDistances(*this, a, problem.deadline, steps)) {
-        stopped_ = true;
+  }
+  if (!distances) return;
+  std::atomic<int> next{0};
+  std::atomic<bool> expired{false};
+  auto worker = [&] {
+    std::vector<std::int32_t> steps;  // one agent's table as the search fills it
+    for (int a = next++; a < invalid; a = next++) {
+      // One table per agent: on large maps and fleets, seconds.
+      if (expired || problem.deadline.expired() || !restrictedDistances(*this, a, problem.deadline, steps)) {
+        expired = true;
         return;
       }
       distances_[a].assign(steps);
-      if (distances_[a][starts_[a]] < 0) {
-        problem_ = label(a) + ": target " + toString(target) + " is not reachable from start " + toString(start);
-      }
+    }
+  };
+  const int lanes = std::max(1, std::min(problem.threads, invalid));
+  std::vector<std::thread> pool;
+  for (int t = 1; t < lanes; ++t) pool.emplace_back(worker);
+  worker();
+  for (auto& t : pool) t.join();
+  if (expired) {
+    stopped_ = true;
+    return;
+  }
+  for (int a = 0; a < invalid; ++a) {
+    if (distances_[a][starts_[a]] < 0) {
+      problem_ = label(a) + ": target " + toString(graph(a).pose(targets_[a])) + " is not reachable from start " +
+                 toString(graph(a).pose(starts_[a]));
+      return;
     }
   }
 }
@@ -194,6 +210,19 @@ void SearchSpace::makeLookups() {
     }
     lookups_[a] = shared;
   }
+}
+
+std::string SearchSpace::endpointProblem(int a) const {
+  GridPose start = instance_->robots[robots_[a]].start, target = instance_->robots[robots_[a]].target;
+  if (graph(a).valid(starts_[a])) start = graph(a).pose(starts_[a]);
+  if (graph(a).valid(targets_[a])) target = graph(a).pose(targets_[a]);
+  if (!graph(a).valid(starts_[a])) return label(a) + ": start " + toString(start) + " is not a valid state";
+  if (!graph(a).valid(targets_[a])) return label(a) + ": target " + toString(target) + " is not a valid state";
+  if (!allows(a, starts_[a], Action::Wait))
+    return label(a) + ": start " + toString(start) + " overlaps a footprint of another subproblem";
+  if (!allows(a, targets_[a], Action::Wait))
+    return label(a) + ": target " + toString(target) + " overlaps a footprint of another subproblem";
+  return "";
 }
 
 std::string SearchSpace::label(int a) const { return "robot '" + instance_->robots[robots_[a]].id + "'"; }

@@ -90,6 +90,8 @@ class SearchSpace {
  private:
   // Builds lookups_ (after reservations_).
   void makeLookups();
+  // Why agent a's start or target is not a valid free state; empty if both are.
+  std::string endpointProblem(int a) const;
 
   const Instance* instance_;
   const FleetGraphs* graphs_;
