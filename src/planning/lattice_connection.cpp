@@ -1,7 +1,9 @@
 // Putting a fleet on its planning lattice; see lattice.h.
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <map>
+#include <thread>
 
 #include "fleet_planner/model/collision.h"
 #include "fleet_planner/model/graph_search.h"
@@ -148,9 +150,12 @@ std::vector<EndWay> targetWays(const Robot& r, const StateGraph& g, const GridMa
 
 /// Every valid way to connect robot `r`, cheapest first (ties in a fixed order): on a lattice of
 /// step > 1, the connecting steps plus the robot's way on the lattice they choose. `problem` is
-/// set (with its kind) when an end has no way at all. Adds the A* expansions to `way_expansions`.
+/// set (with its kind) when an end has no way at all. Without `search_ways` (the fleet's budget
+/// for them spent) the choices are in the order of their connecting steps alone. Adds the A*
+/// expansions to `way_expansions`.
 std::vector<Choice> choicesFor(const Robot& r, int index, const StateGraph& g, WaySearch& ways, const GridMap& map,
-                               int s, std::vector<RobotProblem>& problems, long long& way_expansions) {
+                               int s, bool search_ways, std::vector<RobotProblem>& problems,
+                               long long& way_expansions) {
   std::vector<Choice> out;
   const GridPose S = r.start, G = r.target;
   std::string why;
@@ -211,7 +216,7 @@ std::vector<Choice> choicesFor(const Robot& r, int index, const StateGraph& g, W
   // the moves of a straight way); one whose bound is no better than the best total found keeps
   // its bound, which sorts it after that best. Past the fleet's budget for these searches, the
   // robots left are ordered by connecting steps alone (deterministic: expansions, not time).
-  if (s > 1 && way_expansions < kFleetWayExpansions) {
+  if (s > 1 && search_ways) {
     for (Choice& c : out) c.cost += stepsBound(g, c.prefix.back(), c.suffix.front());
     std::stable_sort(out.begin(), out.end(), [](const Choice& a, const Choice& b) { return a.cost < b.cost; });
     std::map<std::pair<StateId, StateId>, int> known;
@@ -289,19 +294,50 @@ int defaultLatticeStep(const Instance& instance) {
   return std::max(1, static_cast<int>(std::floor(narrowest / 3.0 + 1e-9)));
 }
 
-LatticeInstance connectToLattice(const GridMap& map, const Instance& instance, const FleetGraphs& graphs, int step) {
+LatticeInstance connectToLattice(const GridMap& map, const Instance& instance, const FleetGraphs& graphs, int step,
+                                 int threads) {
   LatticeInstance out;
   out.instance = instance;
   const int n = static_cast<int>(instance.robots.size());
+  // Each robot's choices, on `threads` workers (each with its own way searches; robots with
+  // equal cells share a graph). The fleet's budget for the way searches is then counted in
+  // the robots' order: a robot that one worker after the other would have reached with the
+  // budget spent has its choices made again without them, so that the answer does not depend
+  // on the threads.
+  struct Made {
+    std::vector<Choice> choices;
+    std::vector<RobotProblem> problems;
+    long long expansions = 0;
+  };
+  std::vector<Made> made(n);
+  std::atomic<int> next{0};
+  auto worker = [&] {
+    std::map<const StateGraph*, WaySearch> ways;
+    for (int i = next++; i < n; i = next++) {
+      const StateGraph& g = graphs.graph(i);
+      WaySearch& way = ways.try_emplace(&g, g).first->second;
+      made[i].choices = choicesFor(instance.robots[i], i, g, way, map, step, true, made[i].problems, made[i].expansions);
+    }
+  };
+  const int lanes = std::max(1, std::min(threads, n));
+  std::vector<std::thread> pool;
+  for (int t = 1; t < lanes; ++t) pool.emplace_back(worker);
+  worker();
+  for (auto& t : pool) t.join();
   std::vector<std::vector<Choice>> choices(n);
   std::vector<std::size_t> chosen(n, 0);
   long long way_expansions = 0;
-  std::map<const StateGraph*, WaySearch> ways;  // robots with equal cells share a graph
   for (int i = 0; i < n; ++i) {
-    const StateGraph& g = graphs.graph(i);
-    WaySearch& way = ways.try_emplace(&g, g).first->second;
-    choices[i] = choicesFor(instance.robots[i], i, g, way, map, step, out.problems, way_expansions);
-    if (!out.problems.empty()) {
+    if (way_expansions >= kFleetWayExpansions) {
+      const StateGraph& g = graphs.graph(i);
+      WaySearch unused(g);
+      made[i] = Made{};
+      made[i].choices = choicesFor(instance.robots[i], i, g, unused, map, step, false, made[i].problems, made[i].expansions);
+    }
+    way_expansions += made[i].expansions;
+    choices[i] = std::move(made[i].choices);
+    if (!made[i].problems.empty()) {
+      out.problems = std::move(made[i].problems);
       out.problem = out.problems.front().reason;
       return out;
     }

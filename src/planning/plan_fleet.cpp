@@ -62,7 +62,7 @@ class LatticeAttempt {
     bool yaws = false;
     for (const Robot& r : instance_.robots) yaws = yaws || r.start_yaw || r.target_yaw;
     if (step == 1 && !yaws) return planOn(instance_, *graphs, nullptr, 1);
-    const LatticeInstance lattice = connectToLattice(map_, instance_, *graphs, step);
+    const LatticeInstance lattice = connectToLattice(map_, instance_, *graphs, step, result_.threads);
     if (!lattice.problems.empty()) {  // no lattice can help: a start or target that cannot turn
       result_.precheck.problems = lattice.problems;
       return finalFailure(SolveStatus::InvalidInput, precheckReason(result_.precheck));

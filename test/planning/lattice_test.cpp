@@ -188,13 +188,19 @@ TEST(Lattice, ARobotThatTheLatticeCannotServeIsNamedAndPlannedOnAFinerOne) {
   EXPECT_NE(r.lattice_notes.front().find("'r'"), std::string::npos) << r.lattice_notes.front();
 }
 
+// The same plan again, and on two threads (the connections, the distance tables and the
+// parking plans are made on both).
 TEST(Lattice, SameInputSamePlan) {
   const RandomWorld world(6, 7);
   const PlanningResult a = planFleet(world.map, world.instance, onLattice(3));
   const PlanningResult b = planFleet(world.map, world.instance, onLattice(3));
+  PlanningOptions two = onLattice(3);
+  two.threads = 2;
+  const PlanningResult c = planFleet(world.map, world.instance, two);
   ASSERT_TRUE(validOnCells(world.map, world.instance, a));
   EXPECT_EQ(a.lattice_step, b.lattice_step);
   EXPECT_EQ(a.plan.paths, b.plan.paths);
+  EXPECT_EQ(a.plan.paths, c.plan.paths);
 }
 
 TEST(AnyYaw, StartsAndTargetsAtAnyYawAreTurnedFromAndToOnTheLatticeAndOff) {

@@ -48,7 +48,9 @@ struct LatticeInstance {
 /// free on the map, starts' connections that, run together, meet no other robot's, and of those
 /// the fewest connecting steps plus steps of the robot's way on the lattice offset they choose
 /// (alone on the map; the order of connecting steps alone past a budget of A* expansions).
-LatticeInstance connectToLattice(const GridMap& map, const Instance& instance, const FleetGraphs& graphs, int step);
+/// The robots' choices are made on `threads` threads; the answer does not depend on them.
+LatticeInstance connectToLattice(const GridMap& map, const Instance& instance, const FleetGraphs& graphs, int step,
+                                 int threads = 1);
 
 /// Robot a and robot b along their paths meet at some step u >= from: the cells they cover during
 /// step u share one (after its path a robot stays at rest).
