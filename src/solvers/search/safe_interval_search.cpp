@@ -42,10 +42,14 @@ struct SearchMemory {
   StablePool<Interval> interval_pool;
   std::vector<std::pair<int, int>> merged, runs;  // Sipp's scratch
   std::vector<Interval> interval_scratch;
-  // searchBetween's nodes, (state, interval) -> node, and open list (a heap of node indices).
+  // searchBetween's nodes, (state, interval) -> node, and open list (a heap of the nodes' f, g
+  // and index: its comparisons read the heap alone).
+  struct Open {
+    int f, g, index;
+  };
   std::vector<Node> nodes;
   NodeTable best;
-  std::vector<int> open;
+  std::vector<Open> open;
 
   void clear() {
     unsafe_index.clear();
@@ -62,7 +66,7 @@ struct SearchMemory {
     return unsafe_index.bytes() + intervals_index.bytes() + best.bytes() + run_pool.bytes() +
            interval_pool.bytes() + unsafe.capacity() * sizeof(Unsafe) +
            intervals.capacity() * sizeof(PoolRun<Interval>) + nodes.capacity() * sizeof(Node) +
-           open.capacity() * sizeof(int);
+           open.capacity() * sizeof(Open);
   }
 };
 
@@ -79,7 +83,7 @@ class MemoryLease {
   SearchMemory& memory() { return *held_; }
 
  private:
-  static constexpr std::size_t kKeptBytes = std::size_t{16} << 20;
+  static constexpr std::size_t kKeptBytes = std::size_t{64} << 20;
   std::unique_ptr<SearchMemory> held_;
   static thread_local std::unique_ptr<SearchMemory> idle_;
 };
@@ -336,13 +340,12 @@ SafeIntervalResult searchBetween(const SearchSpace& space, int a, const SoftPath
   auto key = [](StateId s, int i) {
     return (static_cast<std::uint64_t>(i) << 32) | static_cast<std::uint32_t>(s);
   };
-  auto worse = [&nodes](int x, int y) {
-    const Node &p = nodes[x], &q = nodes[y];
+  auto worse = [](const SearchMemory::Open& p, const SearchMemory::Open& q) {
     if (p.f != q.f) return p.f > q.f;
     if (p.g != q.g) return p.g < q.g;
-    return x > y;
+    return p.index > q.index;
   };
-  std::vector<int>& open = memory.open;  // a heap: the node to expand next in front
+  std::vector<SearchMemory::Open>& open = memory.open;  // a heap: the node to expand next in front
   auto push = [&](StateId s, int interval, int arrival, int parent) {
     const int h = heuristic(s);
     if (arrival + h > (forever ? max_arrival : t1 + max_delay)) return;  // cannot reach the goal in time
@@ -352,7 +355,7 @@ SafeIntervalResult searchBetween(const SearchSpace& space, int a, const SoftPath
     if (known != nullptr && nodes[*known].g <= arrival) return;
     best.set(k, static_cast<int>(nodes.size()));
     nodes.push_back({s, interval, arrival, f, parent});
-    open.push_back(static_cast<int>(nodes.size()) - 1);
+    open.push_back({f, arrival, static_cast<int>(nodes.size()) - 1});
     std::push_heap(open.begin(), open.end(), worse);
   };
   push(from, first_interval, t0, -1);
@@ -366,7 +369,7 @@ SafeIntervalResult searchBetween(const SearchSpace& space, int a, const SoftPath
       result.outcome = SafeIntervalResult::Outcome::NodeLimit;
       return result;
     }
-    const int index = open.front();
+    const int index = open.front().index;
     std::pop_heap(open.begin(), open.end(), worse);
     open.pop_back();
     const Node node = nodes[index];
