@@ -244,8 +244,13 @@ class Refiner {
     // path improves the plan: a weighted heuristic finds one in fewer expansions than proving
     // the cheapest, and the bound (on the unweighted one) still keeps only cheaper paths.
     if (lower_[i] >= 0 && lower_[i] < cost) {
+      // Its own path out of the table while it searches: the table's answers leave it out
+      // anyway, and read the cells' kept steps only for a robot that is not in it.
+      const StatePath own = table_->contains(i) ? table_->path(i) : StatePath{};
+      if (!own.empty()) table_->remove(i);
       const SafeIntervalResult found = safeIntervalSearch(*space_, i, *table_, deadline_, options_.max_nodes_per_search,
                                                           cost - 1, options_.heuristic_weight);
+      if (!own.empty()) table_->insert(i, own);
       stats_.expansions += found.expansions;
       if (found.outcome == SafeIntervalResult::Outcome::Found) {
         for (StateId s : found.path) path.push_back(space_->graph(i).pose(s));
