@@ -290,8 +290,8 @@ void SoftPathTable::markUnsafe(int a, StateId s, Action action, std::uint64_t* s
       if (cell_spans_[cell].empty()) return;
       const CellSteps& c = stepsOf(cell);
       forever_from = std::min(forever_from, c.forever);
+      if (c.last < from) return;  // every step it is swept ends before the search's first
       std::uint64_t used = c.used & from_word_on;
-      if (used == 0) return;
       while (used != 0) {
         const int w = __builtin_ctzll(used);
         used &= used - 1;
