@@ -82,6 +82,7 @@ bool LnsSearch::planThroughPocket(const std::vector<int>& group) {
   PocketRepairOptions o;
   o.max_pockets = options_.pockets;
   o.max_expansions = options_.pocket_expansions;
+  o.beside_way = true;
   for (int through : group) {
     std::vector<int> parkers;
     for (int a : group) {

@@ -4,30 +4,34 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <functional>
+#include <queue>
+#include <tuple>
+#include <unordered_map>
+#include <unordered_set>
 
 #include "fleet_planner/model/action.h"
 #include "fleet_planner/solvers/search/safe_interval_search.h"
 
 namespace fleet_planner {
 
-// Breadth-first from `from`; the footprint checks only on states far enough from the
-// pockets already found.
-std::vector<StateId> pocketsOffWay(const SearchSpace& space, int b, const SoftPathTable& table,
-                                   const std::vector<char>& way, const PocketRepairOptions& options,
-                                   StateId from) {
+namespace {
+
+// Breadth-first over b's graph from `from` (its start if kNoState) through states from which b
+// can reach its target (and, with options.around_final_states, clear of every agent's final
+// state in `table`), at most options.max_states of them: visit(s) for each in that order,
+// until it returns false.
+template <class Visit>
+void breadthFirst(const SearchSpace& space, int b, const SoftPathTable& table, const PocketRepairOptions& options,
+                  StateId from, Visit&& visit) {
   if (from == kNoState) from = space.start(b);
-  const int spacing = std::max(
-      1, static_cast<int>(std::ceil(std::sqrt(static_cast<double>(space.cells(b).maxNormSq())))) / 2);
   const StateGraph& g = space.graph(b);
   std::vector<char> seen(static_cast<std::size_t>(g.stateIdCount()), 0);
   std::vector<StateId> queue{from};
   seen[from] = 1;
-  std::vector<StateId> pockets;
   std::vector<int> met;
   const int settled = table.lastMove() + 1;
-  for (std::size_t head = 0; head < queue.size() && static_cast<int>(pockets.size()) < options.max_pockets &&
-                             static_cast<long long>(head) < options.max_states;
-       ++head) {
+  for (std::size_t head = 0; head < queue.size() && static_cast<long long>(head) < options.max_states; ++head) {
     const StateId s = queue[head];
     g.forEachSuccessor(s, [&](Action, StateId next) {
       if (seen[next] || space.distance(b, next) < 0) return;
@@ -39,19 +43,124 @@ std::vector<StateId> pocketsOffWay(const SearchSpace& space, int b, const SoftPa
       }
       queue.push_back(next);
     });
+    if (space.distance(b, s) >= 0 && !visit(s)) return;
+  }
+}
+
+// Agent b standing at s for good meets no agent's final state in `table`.
+bool holdable(const SearchSpace& space, int b, const SoftPathTable& table, StateId s) {
+  std::vector<int> met;
+  table.collisionsHolding(b, s, table.lastMove() + 1, met);
+  return met.empty();
+}
+
+}  // namespace
+
+std::vector<StateId> pocketsOffWay(const SearchSpace& space, int b, const SoftPathTable& table,
+                                   const std::vector<char>& way, const PocketRepairOptions& options,
+                                   StateId from) {
+  // Pockets spread half the robot's radius apart, the footprint checks only on states far
+  // enough from the pockets already found.
+  const int spacing = std::max(
+      1, static_cast<int>(std::ceil(std::sqrt(static_cast<double>(space.cells(b).maxNormSq())))) / 2);
+  const StateGraph& g = space.graph(b);
+  std::vector<StateId> pockets;
+  if (options.max_pockets <= 0) return pockets;
+  breadthFirst(space, b, table, options, from, [&](StateId s) {
     const GridPose p = g.pose(s);
     const bool apart = std::all_of(pockets.begin(), pockets.end(), [&](StateId q) {
       const GridPose o = g.pose(q);
       return std::max(std::abs(o.x - p.x), std::abs(o.y - p.y)) >= spacing;
     });
-    if (!apart || space.distance(b, s) < 0) continue;
-    if (!clearOfWay(space, b, s, way)) continue;
-    met.clear();
-    table.collisionsHolding(b, s, settled, met);
-    if (!met.empty()) continue;
-    pockets.push_back(s);
-  }
+    if (apart && clearOfWay(space, b, s, way) && holdable(space, b, table, s)) pockets.push_back(s);
+    return static_cast<int>(pockets.size()) < options.max_pockets;
+  });
   return pockets;
+}
+
+std::vector<StateId> statesBesideWay(const SearchSpace& space, int b, const SoftPathTable& table,
+                                     const std::vector<char>& way, const PocketRepairOptions& options,
+                                     std::size_t count) {
+  const StateGraph& g = space.graph(b);
+  std::vector<std::pair<int, StateId>> beside;  // (way cells covered, state), in breadth-first order
+  breadthFirst(space, b, table, options, kNoState, [&](StateId s) {
+    const GridPose p = g.pose(s);
+    int covered = 0;
+    forEachMapCell(space.cells(b).body(p.heading), {p.x, p.y}, g.width(), g.height(),
+                   [&](std::size_t cell) { covered += way[cell]; });
+    if (covered > 0) beside.emplace_back(covered, s);
+    return true;
+  });
+  std::stable_sort(beside.begin(), beside.end(),
+                   [](const auto& x, const auto& y) { return x.first < y.first; });
+  std::vector<StateId> states;
+  for (const auto& [covered, s] : beside) {
+    if (states.size() >= count) break;
+    if (holdable(space, b, table, s)) states.push_back(s);
+  }
+  return states;
+}
+
+bool passesBeside(const SearchSpace& space, int through, const StatePath& way, int b, StateId s,
+                  long long max_expansions, long long& expansions) {
+  const StateGraph& g = space.graph(through);
+  const FootprintCells& mine = space.cells(through);
+  const GridPose q = space.graph(b).pose(s);
+  const CellSet& body = space.cells(b).body(q.heading);
+  auto meets = [&](const GridPose& p, Action act) {
+    return CellSet::overlap(mine.swept(p.heading, act), {p.x, p.y}, body, {q.x, q.y});
+  };
+  // The stretch of the way that meets the footprint: steps first..last (state and move on).
+  int first = -1, last = -1;
+  for (std::size_t t = 0; t < way.size(); ++t) {
+    const GridPose p = g.pose(way[t]);
+    const Action act = t + 1 < way.size()
+                           ? actionBetween(p, g.pose(way[t + 1]), g.actionModel()).value_or(Action::Wait)
+                           : Action::Wait;
+    if (!meets(p, act)) continue;
+    if (first < 0) first = static_cast<int>(t);
+    last = static_cast<int>(t);
+  }
+  if (first < 0) return true;
+  if (first == 0 || last + 1 >= static_cast<int>(way.size())) return false;
+  // A* back to the way beyond the stretch (way[last + 1] or a later state) from the way's
+  // states before it, each at its own step along the way: a way round may have to leave the
+  // way some steps before it meets the footprint, for a turn, and join it some steps after.
+  // The bound: the steps to through's target less those from way[last + 1] (the later states
+  // are nearer the target). On a shortest way every state before the stretch has the same f,
+  // and the latest is expanded first (deeper first among equals).
+  const int beyond = space.distance(through, way[last + 1]);
+  const std::unordered_set<StateId> rejoin(way.begin() + last + 1, way.end());
+  auto bound = [&](StateId v) { return std::max(0, space.distance(through, v) - beyond); };
+  std::unordered_map<StateId, int> cost;
+  using Entry = std::tuple<int, int, StateId>;  // f, -g (deeper first), state
+  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> open;
+  for (int t = 0; t <= first; ++t) {
+    if (cost.try_emplace(way[t], t).second) open.emplace(t + bound(way[t]), -t, way[t]);
+  }
+  long long spent = 0;
+  bool found = false;
+  while (!open.empty() && spent < max_expansions) {
+    const auto [f, minus_g, u] = open.top();
+    open.pop();
+    if (-minus_g != cost[u]) continue;
+    if (rejoin.count(u) > 0) {
+      found = true;
+      break;
+    }
+    ++spent;
+    const GridPose p = g.pose(u);
+    g.forEachSuccessor(u, [&](Action act, StateId v) {
+      if (space.distance(through, v) < 0 || meets(p, act)) return;
+      const int c = -minus_g + 1;
+      const auto [it, fresh] = cost.try_emplace(v, c);
+      if (!fresh && it->second <= c) return;
+      it->second = c;
+      open.emplace(c + bound(v), -c, v);
+    });
+  }
+  expansions += spent;
+  return found;
 }
 
 bool clearOfWay(const SearchSpace& space, int b, StateId s, const std::vector<char>& way) {
@@ -113,7 +222,18 @@ std::optional<std::vector<StatePath>> pocketRepair(const SearchSpace& space, Sof
   }
   // The last parker tries its pockets with the whole manoeuvre: the others pass, then the
   // parkers drive on, in their order, each around everything planned so far.
-  for (StateId pocket : pocketsOffWay(space, parkers[m - 1], table, way, options)) {
+  std::vector<StateId> pockets = pocketsOffWay(space, parkers[m - 1], table, way, options);
+  if (options.beside_way && static_cast<int>(pockets.size()) < options.max_pockets) {
+    // Each candidate costs a bounded check (outside the legs' budget: a check that fails
+    // explores up to its limit); a few times as many as the pockets are looked at.
+    const std::size_t candidates = 4 * static_cast<std::size_t>(options.max_pockets);
+    for (StateId s : statesBesideWay(space, parkers[m - 1], table, way, options, candidates)) {
+      if (static_cast<int>(pockets.size()) >= options.max_pockets || deadline.expired()) break;
+      if (passesBeside(space, through, through_way, parkers[m - 1], s, options.beside_expansions, expansions))
+        pockets.push_back(s);
+    }
+  }
+  for (StateId pocket : pockets) {
     if (deadline.expired() || budget() <= 0) break;
     if (!park(m - 1, pocket)) continue;
     SafeIntervalResult past = safeIntervalSearch(space, through, table, deadline, budget());

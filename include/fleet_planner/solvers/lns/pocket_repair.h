@@ -29,6 +29,13 @@ struct PocketRepairOptions {
   /// The breadth-first search for pockets passes only through states clear of every agent's
   /// final state in the table (so that pockets behind standing robots are not offered).
   bool around_final_states = false;
+  /// When fewer than max_pockets pockets are clear of the way, the last parker also tries
+  /// states that cover some of it, the fewest cells first, where `through` can still drive
+  /// past them (passesBeside): where the way runs along a corridor that holds the parker, the
+  /// corridor may widen enough further on for the two to pass side by side.
+  bool beside_way = false;
+  /// Expansions of each passesBeside check (not counted in max_expansions).
+  long long beside_expansions = 4'000;
 };
 
 /// Marks in `way` (a flag per map cell, sized to the map if empty) the cells agent a's footprint
@@ -47,11 +54,27 @@ std::vector<StateId> pocketsOffWay(const SearchSpace& space, int b, const SoftPa
                                    const std::vector<char>& way, const PocketRepairOptions& options,
                                    StateId from = kNoState);
 
+/// Up to `count` states of agent b that pocketsOffWay reaches but leaves because they cover
+/// cells of `way`, meeting no agent's final state in `table`: the fewest way cells first, the
+/// nearest first among equals.
+std::vector<StateId> statesBesideWay(const SearchSpace& space, int b, const SoftPathTable& table,
+                                     const std::vector<char>& way, const PocketRepairOptions& options,
+                                     std::size_t count);
+
+/// True when agent `through` can leave its way `way` (a path) where agent b's footprint at
+/// state s meets it and join it again beyond, around that footprint alone: an A* over through's
+/// graph from the last state of the way before the meeting to the first after it, within
+/// `max_expansions` expansions (added to `expansions`). False where the footprint meets the
+/// way's first or last state, or no way round is found in time.
+bool passesBeside(const SearchSpace& space, int through, const StatePath& way, int b, StateId s,
+                  long long max_expansions, long long& expansions);
+
 /// Paths {through's, then each parker's} (none of these agents in `table`): the parkers drive
 /// to pockets off the way `through_way` (through's shortest path, ignoring other agents) and
 /// wait there, one after the other, while `through` drives to its target; then the parkers
 /// drive to their targets, in their order. Each parker but the last takes the first pocket it
-/// reaches; the last tries its pockets in turn. All collide with no agent of `table` and not
+/// reaches; the last tries its pockets in turn (with options.beside_way, then the states beside
+/// the way that through passes). All collide with no agent of `table` and not
 /// with each other. None if no pocket tried works. `table` is used as scratch and is as it was
 /// on return; the expansions spent are added to `expansions`. Deterministic.
 std::optional<std::vector<StatePath>> pocketRepair(const SearchSpace& space, SoftPathTable& table,
