@@ -95,6 +95,10 @@ class LnsSearch {
   // otherwise solves in that time.
   bool planTogether(const std::vector<int>& group);
 
+  // The group alone among the static obstacles by LA-LaCAM, its paths put in the table (soft
+  // towards the others); false if it found none or the subproblem has moving obstacles.
+  bool planAlone(const std::vector<int>& group, double seconds);
+
   // Each member of the group in turn drives to its target while the others wait in pockets off
   // its way and then drive on, in the group's order (pocket_repair.h). False (and none of the
   // group in the table) if no pocket worked.

@@ -66,6 +66,11 @@ struct LaLnsOptions {
   /// static obstacles by LA-LaCAM, with this many expansions: a pair that cannot reach its
   /// targets proves that the subproblem has no plan.
   long long pair_proof_expansions = 2'000'000;
+  /// Joint repair, after LA-CBS: the group alone among the static obstacles by LA-LaCAM, with
+  /// at most this many expansions (0: never) in the time LA-CBS had, when the subproblem has no
+  /// moving obstacles (LA-LaCAM does not plan around them); its paths go into the table soft,
+  /// whatever they meet of the others.
+  long long alone_expansions = 100'000;
   /// Joint repair, after the ordered one: two agents of the group trading places through a
   /// pocket (pocket_repair.h), with at most this many pockets tried per agent that parks
   /// (0: never), with at most pocket_expansions expansions of its searches in all.
