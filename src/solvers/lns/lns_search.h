@@ -85,14 +85,14 @@ class LnsSearch {
   // Replans the group jointly around all others' paths: first one after the other, in the
   // group's order and then in reverse, with the members not yet replanned at their starts
   // (ordered_repair.h: cheap, and collision-free if it works); then two of them trading places
-  // through a pocket (pocket_repair.h, collision-free too); then by LA-CBS within a small
-  // share of the time left (others hard), and if that finds nothing, for a small group and once the
-  // neighbourhood has grown to the whole subproblem, by a joint search (joint_path_search.h;
-  // others soft); false if neither found a plan. A joint search that exhausts the group's joint
-  // space proves that the subproblem has no plan (proof_). The joint search waits for the deep
-  // stall because it costs time the repair needs: run at every joint step, its budget spent
-  // 4-5 s of the 7 s that LA-LNS had for a 12-robot level of maze-128-128-10 K=40, which it
-  // otherwise solves in that time.
+  // through a pocket (pocket_repair.h, collision-free too); then by LA-CBS within a small share
+  // of the time left (others hard); then alone by LA-LaCAM (planAlone); and if none of these
+  // finds a plan, for a small group and once the neighbourhood has grown to the whole
+  // subproblem, by a joint search (joint_path_search.h; others soft); false if none found one. A
+  // joint search that exhausts the group's joint space proves that the subproblem has no plan
+  // (proof_). The joint search waits for the deep stall because it costs time the repair needs:
+  // run at every joint step, its budget spent 4-5 s of the 7 s that LA-LNS had for a 12-robot
+  // level of maze-128-128-10 K=40, which it otherwise solves in that time.
   bool planTogether(const std::vector<int>& group);
 
   // The group alone among the static obstacles by LA-LaCAM, its paths put in the table (soft

@@ -22,7 +22,8 @@
 /// one-by-one replanning cannot untie: one after the other, collision-free, with the ones not
 /// yet replanned at their starts, in a random order and in reverse (ordered_repair.h); where
 /// that fails, each of them in turn driving through while the others wait in pockets off its
-/// way (pocket_repair.h); then by LA-CBS (joint_repair.h); and where that fails too, once the neighbourhood
+/// way or beside it (pocket_repair.h); then by LA-CBS (joint_repair.h); then, without moving
+/// obstacles, alone among the static obstacles by LA-LaCAM; and where that fails too, once the neighbourhood
 /// has grown to the whole subproblem, by a joint search (joint_path_search.h).
 ///
 /// A subproblem with returning robots (robots of other subproblems stepping aside) is first
