@@ -20,21 +20,27 @@ Robot withYaws(Robot r, double start_yaw, double target_yaw) {
   return r;
 }
 
-// Robots mir100_33 and fetch_44 of `realmap_scenario.py --robots 50 --seed 3` on the
-// bookstore: in the 1.5 m aisle between two shelves, the MiR100 (0.9 x 0.6 m) drives west out
-// of the place the Fetch (0.6 m across) comes east to. LA-LNS's repairs, ordered and pocket
-// repairs and LA-CBS found no plan for the pair in 30 s; LA-LaCAM on the pair alone finds one
-// in 1,709 configurations.
-TEST(Knots, APairInABookstoreAisle) {
-  const std::string root = std::string(FLEET_PLANNER_TEST_DATA) + "/../../../shared/realmaps";
-  if (!std::filesystem::exists(root + "/bookstore.yaml")) GTEST_SKIP() << "no " << root;
-  const GridMap map = loadMap(root + "/bookstore.yaml");
+const std::string kRealMaps = std::string(FLEET_PLANNER_TEST_DATA) + "/../../../shared/realmaps";
+
+// The robots' own poses and yaws of `realmap_scenario.py --robots 50 --seed 3` on the bookstore.
+Robot mir100_33() {
+  return withYaws(makeRobot("mir100_33", Footprint::block(-8.9, -5.8, 8.9, 5.8), {176, 239, 3}, {121, 240, 2}),
+                  -1.905453, 1.771891);
+}
+Robot fetch_44() {
+  return withYaws(makeRobot("fetch_44", Footprint::circle(6.0), {156, 241, 2}, {175, 235, 3}), 1.896193, -1.200034);
+}
+Robot mir100_45() {
+  return withYaws(makeRobot("mir100_45", Footprint::block(-8.9, -5.8, 8.9, 5.8), {132, 242, 3}, {147, 239, 0}),
+                  -1.497010, -0.132633);
+}
+
+// The pair planned raw as the node plans (backward moves, the default lattice), checked by
+// the validator.
+void expectPlanned(const std::vector<Robot>& robots) {
+  const GridMap map = loadMap(kRealMaps + "/bookstore.yaml");
   Instance instance;
-  instance.robots = {
-      withYaws(makeRobot("mir100_33", Footprint::block(-8.9, -5.8, 8.9, 5.8), {176, 239, 3}, {121, 240, 2}),
-               -1.905453, 1.771891),
-      withYaws(makeRobot("fetch_44", Footprint::circle(6.0), {156, 241, 2}, {175, 235, 3}), 1.896193,
-               -1.200034)};
+  instance.robots = robots;
   PlanningOptions o;
   o.model.allow_backward = true;
   o.decompose = false;
@@ -47,6 +53,24 @@ TEST(Knots, APairInABookstoreAisle) {
   model.step = r.lattice_step;
   const ValidationResult valid = validatePlan(map, instance, r.plan, model);
   EXPECT_TRUE(valid.valid()) << valid.violation.message;
+}
+
+// In the 1.5 m aisle between two shelves, the MiR100 (0.9 x 0.6 m) drives west out of the place
+// the Fetch (0.6 m across) comes east to. LA-LNS's repairs, ordered and pocket repairs and
+// LA-CBS found no plan for the pair in 30 s; LA-LaCAM on the pair alone finds one in 1,709
+// configurations.
+TEST(Knots, AMir100AndAFetchInABookstoreAisle) {
+  if (!std::filesystem::exists(kRealMaps + "/bookstore.yaml")) GTEST_SKIP() << "no " << kRealMaps;
+  expectPlanned({mir100_33(), fetch_44()});
+}
+
+// Two MiR100s in the same aisle, too narrow for them to pass side by side: both leave it by its
+// east end, where one waits beside the other's way while that one passes, and they drive back
+// in one after the other. The pocket repair finds it once its budget has doubled twice for the
+// pair (LA-LaCAM alone needs 447,000 configurations).
+TEST(Knots, TwoMir100sInABookstoreAisle) {
+  if (!std::filesystem::exists(kRealMaps + "/bookstore.yaml")) GTEST_SKIP() << "no " << kRealMaps;
+  expectPlanned({mir100_33(), mir100_45()});
 }
 
 }  // namespace

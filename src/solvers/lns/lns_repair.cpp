@@ -104,12 +104,18 @@ bool LnsSearch::planAlone(const std::vector<int>& group, double seconds) {
 
 // Each member of the group in turn drives to its target while the others wait in pockets off
 // its way and then drive on, in the group's order (pocket_repair.h). False (and none of the
-// group in the table) if no pocket worked.
+// group in the table) if no pocket worked. Each time it fails for a group, that group's budget
+// doubles (up to 16 times pocket_expansions): a leg that must go round the robot that parked at
+// its target expands much of the map (the distances do not see that robot), and most knots
+// are untied, or not, within the base budget.
 bool LnsSearch::planThroughPocket(const std::vector<int>& group) {
   if (group.size() < 2 || options_.pockets <= 0) return false;
+  std::vector<int> key = group;
+  std::sort(key.begin(), key.end());
+  int& failures = pocket_failures_[key];
   PocketRepairOptions o;
   o.max_pockets = options_.pockets;
-  o.max_expansions = options_.pocket_expansions;
+  o.max_expansions = options_.pocket_expansions << std::min(failures, 4);
   o.beside_way = true;
   for (int through : group) {
     std::vector<int> parkers;
@@ -124,6 +130,7 @@ bool LnsSearch::planThroughPocket(const std::vector<int>& group) {
     for (std::size_t i = 0; i < parkers.size(); ++i) table_.insert(parkers[i], (*paths)[i + 1]);
     return true;
   }
+  ++failures;
   return false;
 }
 

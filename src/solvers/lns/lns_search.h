@@ -8,6 +8,7 @@
 //                         joint search), pair proofs, local splices, the collision graph.
 #include <array>
 #include <optional>
+#include <map>
 #include <set>
 #include <string>
 #include <utility>
@@ -142,6 +143,7 @@ class LnsSearch {
   std::optional<std::string> proof_;  // why the subproblem has no plan, once a search proved it
   std::vector<int> proof_culprits_;   // the robots of that proof (instance indices)
   std::set<std::pair<int, int>> pairs_tried_;  // by provePair
+  std::map<std::vector<int>, int> pocket_failures_;  // by planThroughPocket, per sorted group
   NeighborhoodGrowth growth_;
   int size_ = 0;                    // agents in this repair's neighbourhood (growth_)
   std::array<double, kMethods> weights_;

@@ -74,7 +74,8 @@ struct LaLnsOptions {
   long long alone_expansions = 100'000;
   /// Joint repair, after the ordered one: two agents of the group trading places through a
   /// pocket (pocket_repair.h), with at most this many pockets tried per agent that parks
-  /// (0: never), with at most pocket_expansions expansions of its searches in all.
+  /// (0: never), with at most pocket_expansions expansions of its searches in all (doubled
+  /// each time it fails for the same group, up to 16 times).
   int pockets = 8;
   long long pocket_expansions = 20'000;
   /// With returning robots, the stage is cleared (stage_clearing.h) only for at most this many
