@@ -63,8 +63,8 @@ std::vector<StateId> statesBesideWay(const SearchSpace& space, int b, const Soft
 
 /// True when agent `through` can leave its way `way` (a path) where agent b's footprint at
 /// state s meets it and join it again beyond, around that footprint alone: an A* over through's
-/// graph from the last state of the way before the meeting to the first after it, within
-/// `max_expansions` expansions (added to `expansions`). False where the footprint meets the
+/// graph from the way's states before the meeting (each at its step along the way) to any of
+/// its states after it, within `max_expansions` expansions (added to `expansions`). False where the footprint meets the
 /// way's first or last state, or no way round is found in time.
 bool passesBeside(const SearchSpace& space, int through, const StatePath& way, int b, StateId s,
                   long long max_expansions, long long& expansions);
