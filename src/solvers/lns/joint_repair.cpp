@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "fleet_planner/solvers/cbs/la_cbs.h"
+#include "fleet_planner/solvers/search/solve_common.h"
 
 namespace fleet_planner {
 
@@ -29,14 +30,8 @@ std::vector<StatePath> jointRepair(const SearchSpace& space, const Subproblem& p
   sub.max_expansions = max_expansions;
   const SolveResult r = LaCbs().solve(sub);
   expansions += r.stats.low_level_expansions;
-  std::vector<StatePath> out;
-  if (!r.success()) return out;
-  for (std::size_t k = 0; k < group.size(); ++k) {
-    StatePath p;
-    for (const GridPose& pose : r.paths[k]) p.push_back(space.graph(group[k]).id(pose));
-    out.push_back(std::move(p));
-  }
-  return out;
+  if (!r.success()) return {};
+  return toStatePaths(space, group, r.paths);
 }
 
 }  // namespace fleet_planner

@@ -8,6 +8,7 @@
 #include "fleet_planner/solvers/lns/path_splice.h"
 #include "fleet_planner/solvers/lns/pocket_repair.h"
 #include "fleet_planner/solvers/search/joint_path_search.h"
+#include "fleet_planner/solvers/search/solve_common.h"
 #include "lns_search.h"
 
 namespace fleet_planner {
@@ -94,11 +95,8 @@ bool LnsSearch::planAlone(const std::vector<int>& group, double seconds) {
   const SolveResult r = LaLacam().solve(sub);
   stats_.low_level_expansions += r.stats.low_level_expansions;
   if (!r.success()) return false;
-  for (std::size_t k = 0; k < group.size(); ++k) {
-    StatePath p;
-    for (const GridPose& pose : r.paths[k]) p.push_back(space_.graph(group[k]).id(pose));
-    table_.insert(group[k], p);
-  }
+  const std::vector<StatePath> paths = toStatePaths(space_, group, r.paths);
+  for (std::size_t k = 0; k < group.size(); ++k) table_.insert(group[k], paths[k]);
   return true;
 }
 

@@ -58,16 +58,26 @@ bool holdable(const SearchSpace& space, int b, const SoftPathTable& table, State
 
 std::vector<StateId> pocketsOffWay(const SearchSpace& space, int b, const SoftPathTable& table,
                                    const std::vector<char>& way, const PocketRepairOptions& options,
-                                   StateId from) {
+                                   StateId from, std::vector<StateId>* beside, std::size_t count) {
   // Pockets spread half the robot's radius apart, the footprint checks only on states far
   // enough from the pockets already found.
   const int spacing = std::max(
       1, static_cast<int>(std::ceil(std::sqrt(static_cast<double>(space.cells(b).maxNormSq())))) / 2);
   const StateGraph& g = space.graph(b);
   std::vector<StateId> pockets;
+  std::vector<std::pair<int, StateId>> covering;  // (way cells covered, state), breadth-first
   if (options.max_pockets <= 0) return pockets;
   breadthFirst(space, b, table, options, from, [&](StateId s) {
     const GridPose p = g.pose(s);
+    if (beside != nullptr) {  // every state's way cells counted
+      int covered = 0;
+      forEachMapCell(space.cells(b).body(p.heading), {p.x, p.y}, g.width(), g.height(),
+                     [&](std::size_t cell) { covered += way[cell]; });
+      if (covered > 0) {
+        covering.emplace_back(covered, s);
+        return true;
+      }
+    }
     const bool apart = std::all_of(pockets.begin(), pockets.end(), [&](StateId q) {
       const GridPose o = g.pose(q);
       return std::max(std::abs(o.x - p.x), std::abs(o.y - p.y)) >= spacing;
@@ -75,30 +85,15 @@ std::vector<StateId> pocketsOffWay(const SearchSpace& space, int b, const SoftPa
     if (apart && clearOfWay(space, b, s, way) && holdable(space, b, table, s)) pockets.push_back(s);
     return static_cast<int>(pockets.size()) < options.max_pockets;
   });
-  return pockets;
-}
-
-std::vector<StateId> statesBesideWay(const SearchSpace& space, int b, const SoftPathTable& table,
-                                     const std::vector<char>& way, const PocketRepairOptions& options,
-                                     std::size_t count) {
-  const StateGraph& g = space.graph(b);
-  std::vector<std::pair<int, StateId>> beside;  // (way cells covered, state), in breadth-first order
-  breadthFirst(space, b, table, options, kNoState, [&](StateId s) {
-    const GridPose p = g.pose(s);
-    int covered = 0;
-    forEachMapCell(space.cells(b).body(p.heading), {p.x, p.y}, g.width(), g.height(),
-                   [&](std::size_t cell) { covered += way[cell]; });
-    if (covered > 0) beside.emplace_back(covered, s);
-    return true;
-  });
-  std::stable_sort(beside.begin(), beside.end(),
-                   [](const auto& x, const auto& y) { return x.first < y.first; });
-  std::vector<StateId> states;
-  for (const auto& [covered, s] : beside) {
-    if (states.size() >= count) break;
-    if (holdable(space, b, table, s)) states.push_back(s);
+  if (beside != nullptr && static_cast<int>(pockets.size()) < options.max_pockets) {
+    std::stable_sort(covering.begin(), covering.end(),
+                     [](const auto& x, const auto& y) { return x.first < y.first; });
+    for (const auto& [covered, s] : covering) {
+      if (beside->size() >= count) break;
+      if (holdable(space, b, table, s)) beside->push_back(s);
+    }
   }
-  return states;
+  return pockets;
 }
 
 bool passesBeside(const SearchSpace& space, int through, const StatePath& way, int b, StateId s,
@@ -151,7 +146,7 @@ bool passesBeside(const SearchSpace& space, int through, const StatePath& way, i
     ++spent;
     const GridPose p = g.pose(u);
     g.forEachSuccessor(u, [&](Action act, StateId v) {
-      if (space.distance(through, v) < 0 || meets(p, act)) return;
+      if (space.distance(through, v) < 0 || !space.allows(through, u, act) || meets(p, act)) return;
       const int c = -minus_g + 1;
       const auto [it, fresh] = cost.try_emplace(v, c);
       if (!fresh && it->second <= c) return;
@@ -222,16 +217,16 @@ std::optional<std::vector<StatePath>> pocketRepair(const SearchSpace& space, Sof
   }
   // The last parker tries its pockets with the whole manoeuvre: the others pass, then the
   // parkers drive on, in their order, each around everything planned so far.
-  std::vector<StateId> pockets = pocketsOffWay(space, parkers[m - 1], table, way, options);
-  if (options.beside_way && static_cast<int>(pockets.size()) < options.max_pockets) {
-    // Each candidate costs a bounded check (outside the legs' budget: a check that fails
-    // explores up to its limit); a few times as many as the pockets are looked at.
-    const std::size_t candidates = 4 * static_cast<std::size_t>(options.max_pockets);
-    for (StateId s : statesBesideWay(space, parkers[m - 1], table, way, options, candidates)) {
-      if (static_cast<int>(pockets.size()) >= options.max_pockets || deadline.expired()) break;
-      if (passesBeside(space, through, through_way, parkers[m - 1], s, options.beside_expansions, expansions))
-        pockets.push_back(s);
-    }
+  // Each state beside the way costs a bounded check (outside the legs' budget: a check that
+  // fails explores up to its limit); a few times as many as the pockets are looked at.
+  std::vector<StateId> beside;
+  std::vector<StateId> pockets =
+      pocketsOffWay(space, parkers[m - 1], table, way, options, kNoState, options.beside_way ? &beside : nullptr,
+                    4 * static_cast<std::size_t>(options.max_pockets));
+  for (StateId s : beside) {
+    if (static_cast<int>(pockets.size()) >= options.max_pockets || deadline.expired()) break;
+    if (passesBeside(space, through, through_way, parkers[m - 1], s, options.beside_expansions, expansions))
+      pockets.push_back(s);
   }
   for (StateId pocket : pockets) {
     if (deadline.expired() || budget() <= 0) break;

@@ -85,6 +85,15 @@ SolveResult failedResult(SolveStatus status, std::string reason) {
   return r;
 }
 
+std::vector<StatePath> toStatePaths(const SearchSpace& space, const std::vector<int>& agents,
+                                    const std::vector<Path>& paths) {
+  std::vector<StatePath> out(agents.size());
+  for (std::size_t k = 0; k < agents.size(); ++k) {
+    for (const GridPose& p : paths[k]) out[k].push_back(space.graph(agents[k]).id(p));
+  }
+  return out;
+}
+
 std::vector<Path> toPosePaths(const SearchSpace& space, const std::vector<StatePath>& paths) {
   std::vector<Path> out(paths.size());
   for (std::size_t a = 0; a < paths.size(); ++a) {

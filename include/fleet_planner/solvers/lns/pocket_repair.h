@@ -49,17 +49,14 @@ bool clearOfWay(const SearchSpace& space, int b, StateId s, const std::vector<ch
 /// `from` (its start if kNoState; breadth-first over its graph's edges, at most
 /// options.max_states) from which it can reach its target, where its footprint covers no cell
 /// marked in `way` and meets no agent's final state in `table`, spread half its radius apart.
-/// A filter only: static sweeps of the edges are left to the searches that drive there.
+/// With `beside`, when fewer pockets than that are found, also up to `count` of the states
+/// reached that cover marked cells (and meet no final state), the fewest cells first, the
+/// nearest first among equals. A filter only: static sweeps of the edges are left to the
+/// searches that drive there.
 std::vector<StateId> pocketsOffWay(const SearchSpace& space, int b, const SoftPathTable& table,
                                    const std::vector<char>& way, const PocketRepairOptions& options,
-                                   StateId from = kNoState);
-
-/// Up to `count` states of agent b that pocketsOffWay reaches but leaves because they cover
-/// cells of `way`, meeting no agent's final state in `table`: the fewest way cells first, the
-/// nearest first among equals.
-std::vector<StateId> statesBesideWay(const SearchSpace& space, int b, const SoftPathTable& table,
-                                     const std::vector<char>& way, const PocketRepairOptions& options,
-                                     std::size_t count);
+                                   StateId from = kNoState, std::vector<StateId>* beside = nullptr,
+                                   std::size_t count = 0);
 
 /// True when agent `through` can leave its way `way` (a path) where agent b's footprint at
 /// state s meets it and join it again beyond, around that footprint alone: an A* over through's

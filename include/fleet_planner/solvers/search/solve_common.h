@@ -23,4 +23,8 @@ SolveResult failedResult(SolveStatus status, std::string reason);
 /// Paths of state ids as poses, trailing waits at the end trimmed.
 std::vector<Path> toPosePaths(const SearchSpace& space, const std::vector<StatePath>& paths);
 
+/// Pose paths of the given agents (paths[k] of agents[k]) as state ids of their graphs.
+std::vector<StatePath> toStatePaths(const SearchSpace& space, const std::vector<int>& agents,
+                                    const std::vector<Path>& paths);
+
 }  // namespace fleet_planner
