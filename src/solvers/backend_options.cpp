@@ -48,6 +48,7 @@ void LaLns::configure(const BackendOptionValues& values) {
   bind.integer("joint_max_expansions", o.joint_max_expansions, 0, kMaxCount);
   bind.integer("pair_proof_expansions", o.pair_proof_expansions, 0, kMaxCount);
   bind.integer("alone_expansions", o.alone_expansions, 0, kMaxCount);
+  bind.integer("joint_robots", o.joint_robots, 0, 16);
   bind.integer("pockets", o.pockets, 0, 100000);
   bind.integer("pocket_expansions", o.pocket_expansions, 1, kMaxCount);
   bind.integer("stage_robots", o.stage_robots, 0, 100000);

@@ -6,7 +6,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <filesystem>
 
+#include "fleet_planner/io/map_io.h"
 #include "fleet_planner/model/plan_validator.h"
 #include "fleet_planner/runtime/random.h"
 #include "fleet_planner/solvers/registry.h"
@@ -360,6 +362,26 @@ TEST(LaLns, UntiesThreeRobotKnot) {
   ASSERT_TRUE(solvedValidly(o));
 }
 
+// Robots 135 and 227 of `generate --feasible --seed 2` with 300 robots on Berlin_1_256 (read
+// from ../shared when it is there), alone: their targets touch, so the one that arrives first
+// must not close the other's way in. Replanned one by one (the other neighbourhoods, which for
+// two robots hold both), each repair cost about 900,000 expansions, and with solver seeds 0
+// and 3 the joint repair's turn came after 6 and 11 repairs (5.6 and 8.8 million expansions);
+// taken at once, its LA-LaCAM plan of the pair is the first repair (about 1.3 million).
+TEST(LaLns, TakesTheJointRepairAtOnceForTwoRobots) {
+  const std::string root = std::string(FLEET_PLANNER_TEST_DATA) + "/../../../shared/benchmark";
+  if (!std::filesystem::exists(root + "/maps/Berlin_1_256.map")) GTEST_SKIP() << "no " << root;
+  const World w(loadMovingAiMap(root + "/maps/Berlin_1_256.map"),
+                {makeRobot("135", Footprint::block(-0.2, -1.6, 1.8, 1.6), {155, 182, 1}, {27, 29, 3}),
+                 makeRobot("227", Footprint::block(-0.4, -0.5, 1.1, 0.5), {69, 199, 2}, {28, 30, 2})});
+  for (const std::uint64_t seed : {0, 3}) {
+    Subproblem sub = allRobots(w, 60.0, seed);
+    sub.max_expansions = 2'500'000;
+    const Outcome o = solveWith("la_lns", w, sub);
+    EXPECT_TRUE(solvedValidly(o)) << "seed " << seed << ": " << describe(o);
+  }
+}
+
 // Two robots that cannot pass each other: the joint step proves it and names them, at once.
 TEST(LaLns, ProvesAnImpossibleSwapAndNamesBothRobots) {
   const World w(freeMap(6, 1), {dot("a", {0, 0, 0}, {5, 0, 0}), dot("b", {5, 0, 1}, {0, 0, 1})});
@@ -394,7 +416,8 @@ TEST(LaLns, ProvesAnImpossibleSwapInALongCorridorByThePairAlone) {
 
 // The same swap, with both proofs out of reach (no joint states, no pair expansions): LA-LNS
 // is stuck. When the caller has something else to try, it says so after a few repairs of
-// every robot, long before its budget; otherwise it spends the budget.
+// every robot (joint repairs, for two robots: about 1.5 million expansions), long before its
+// budget; otherwise it spends the budget.
 TEST(LaLns, GivesUpWhenStuckOnlyIfTheCallerMayTrySomethingElse) {
   const int n = 16;
   const World w(freeMap(n, 1), {dot("a", {0, 0, 0}, {n - 3, 0, 0}), dot("b", {n - 3, 0, 2}, {0, 0, 2})});
@@ -413,7 +436,7 @@ TEST(LaLns, GivesUpWhenStuckOnlyIfTheCallerMayTrySomethingElse) {
     EXPECT_EQ(stuck, may_give_up) << o.result.reason;
     EXPECT_EQ(o.result.reason.find("expansion budget") != std::string::npos, !may_give_up) << o.result.reason;
     if (may_give_up) {
-      EXPECT_LT(o.result.stats.low_level_expansions, sub.max_expansions / 4) << describe(o);
+      EXPECT_LT(o.result.stats.low_level_expansions, sub.max_expansions / 3) << describe(o);
       EXPECT_EQ(o.result.culprits, (std::vector<int>{0, 1}));
     }
   }

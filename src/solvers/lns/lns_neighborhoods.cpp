@@ -17,6 +17,7 @@ void LnsSearch::shuffle(std::vector<int>& v) {
 }
 
 Method LnsSearch::chooseMethod() {
+  if (n_ <= options_.joint_robots) return kJoint;
   double total = 0;
   for (double w : weights_) total += w;
   double r = rng_.uniform01() * total;

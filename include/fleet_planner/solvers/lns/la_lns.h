@@ -72,6 +72,10 @@ struct LaLnsOptions {
   /// moving obstacles (LA-LaCAM does not plan around them); its paths go into the table soft,
   /// whatever they meet of the others.
   long long alone_expansions = 100'000;
+  /// A subproblem of at most this many robots takes the joint repair at every repair step:
+  /// the other neighbourhoods would replan all of its robots one by one anyway, and the joint
+  /// repair also tries them in order, through pockets, by LA-CBS and by LA-LaCAM.
+  int joint_robots = 3;
   /// Joint repair, after the ordered one: two agents of the group trading places through a
   /// pocket (pocket_repair.h), with at most this many pockets tried per agent that parks
   /// (0: never), with at most pocket_expansions expansions of its searches in all (doubled
