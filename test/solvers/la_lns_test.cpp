@@ -6,9 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <filesystem>
 
-#include "fleet_planner/io/map_io.h"
 #include "fleet_planner/model/plan_validator.h"
 #include "fleet_planner/runtime/random.h"
 #include "fleet_planner/solvers/registry.h"
@@ -369,9 +367,9 @@ TEST(LaLns, UntiesThreeRobotKnot) {
 // and 3 the joint repair's turn came after 6 and 11 repairs (5.6 and 8.8 million expansions);
 // taken at once, its LA-LaCAM plan of the pair is the first repair (about 1.3 million).
 TEST(LaLns, TakesTheJointRepairAtOnceForTwoRobots) {
-  const std::string root = std::string(FLEET_PLANNER_TEST_DATA) + "/../../../shared/benchmark";
-  if (!std::filesystem::exists(root + "/maps/Berlin_1_256.map")) GTEST_SKIP() << "no " << root;
-  const World w(loadMovingAiMap(root + "/maps/Berlin_1_256.map"),
+  const std::optional<GridMap> berlin = sharedBenchmarkMap("Berlin_1_256");
+  if (!berlin) GTEST_SKIP() << "no ../shared/benchmark";
+  const World w(*berlin,
                 {makeRobot("135", Footprint::block(-0.2, -1.6, 1.8, 1.6), {155, 182, 1}, {27, 29, 3}),
                  makeRobot("227", Footprint::block(-0.4, -0.5, 1.1, 0.5), {69, 199, 2}, {28, 30, 2})});
   for (const std::uint64_t seed : {0, 3}) {

@@ -6,9 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <filesystem>
 
-#include "fleet_planner/io/map_io.h"
 #include "fleet_planner/model/plan_validator.h"
 #include "fleet_planner/solvers/lns/ordered_repair.h"
 #include "fleet_planner/solvers/lns/pocket_repair.h"
@@ -139,9 +137,9 @@ TEST(PocketRepair, BesideTheWayWhereTheCorridorWidens) {
 // 293 passes it only where the strip widens, turning some steps before it. LA-LNS (raw) found
 // no plan before the parker could wait beside the way.
 TEST(PocketRepair, LaLnsLetsABlockWaitBesideAWayOnTheEdgeOfParis) {
-  const std::string root = std::string(FLEET_PLANNER_TEST_DATA) + "/../../../shared/benchmark";
-  if (!std::filesystem::exists(root + "/maps/Paris_1_256.map")) GTEST_SKIP() << "no " << root;
-  const World w(loadMovingAiMap(root + "/maps/Paris_1_256.map"),
+  const std::optional<GridMap> paris = sharedBenchmarkMap("Paris_1_256");
+  if (!paris) GTEST_SKIP() << "no ../shared/benchmark";
+  const World w(*paris,
                 {makeRobot("95", Footprint::block(-1.9, -2, 1.3, 2), {231, 2, 0}, {226, 2, 1}),
                  makeRobot("293", Footprint::block(-1.3, -1.4, 1.3, 1.4), {220, 92, 3}, {245, 5, 0})});
   Subproblem sub = allRobots(w, 120.0);

@@ -2,10 +2,12 @@
 
 #include <algorithm>
 #include <chrono>
+#include <filesystem>
 #include <sstream>
 #include <stdexcept>
 
 #include "fleet_planner/io/instance_generator.h"
+#include "fleet_planner/io/map_io.h"
 #include "fleet_planner/model/collision.h"
 #include "fleet_planner/model/footprint_cells.h"
 #include "fleet_planner/model/instance_check.h"
@@ -48,6 +50,12 @@ int World::robotIndex(const std::string& id) const {
   for (std::size_t i = 0; i < instance.robots.size(); ++i)
     if (instance.robots[i].id == id) return static_cast<int>(i);
   throw std::out_of_range("no robot '" + id + "'");
+}
+
+std::optional<GridMap> sharedBenchmarkMap(const std::string& name) {
+  const std::string path = std::string(FLEET_PLANNER_TEST_DATA) + "/../../../shared/benchmark/maps/" + name + ".map";
+  if (!std::filesystem::exists(path)) return std::nullopt;
+  return loadMovingAiMap(path);
 }
 
 Subproblem allRobots(const World& world, double time_limit_s, std::uint64_t seed) {

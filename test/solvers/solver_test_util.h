@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -49,6 +50,10 @@ struct World {
   /// Index of the robot with this id; throws std::out_of_range if there is none.
   int robotIndex(const std::string& id) const;
 };
+
+/// A map of the paper's benchmark (`../shared/benchmark/maps/<name>.map`, next to the
+/// repository), or none when that folder is not there.
+std::optional<GridMap> sharedBenchmarkMap(const std::string& name);
 
 /// A subproblem over every robot of `world` in instance order, with no static or moving
 /// obstacles, a deadline `time_limit_s` seconds from now and `seed`.
