@@ -177,9 +177,8 @@ std::optional<SolveResult> LnsSearch::clearedStage() {
   stats_.low_level_expansions += planned.stats.low_level_expansions;
   if (!planned.success()) return std::nullopt;
   std::vector<StatePath> alone(n_);
-  for (std::size_t k = 0; k < movers.size(); ++k) {
-    for (const GridPose& p : planned.paths[k]) alone[movers[k]].push_back(space_.graph(movers[k]).id(p));
-  }
+  std::vector<StatePath> moved = toStatePaths(space_, movers, planned.paths);
+  for (std::size_t k = 0; k < movers.size(); ++k) alone[movers[k]] = std::move(moved[k]);
   const std::optional<std::vector<StatePath>> paths =
       clearTheStage(space_, returning, alone, problem_.deadline, options_.pockets,
                     options_.max_expansions_per_search, stats_.low_level_expansions);

@@ -7,8 +7,8 @@
 //   lns_repair.cpp        replanning a neighbourhood: one by one, together (ordered, LA-CBS,
 //                         joint search), pair proofs, local splices, the collision graph.
 #include <array>
-#include <optional>
 #include <map>
+#include <optional>
 #include <set>
 #include <string>
 #include <utility>

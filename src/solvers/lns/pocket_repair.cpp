@@ -48,7 +48,7 @@ void breadthFirst(const SearchSpace& space, int b, const SoftPathTable& table, c
 }
 
 // Agent b standing at s for good meets no agent's final state in `table`.
-bool holdable(const SearchSpace& space, int b, const SoftPathTable& table, StateId s) {
+bool holdable(int b, const SoftPathTable& table, StateId s) {
   std::vector<int> met;
   table.collisionsHolding(b, s, table.lastMove() + 1, met);
   return met.empty();
@@ -82,7 +82,9 @@ std::vector<StateId> pocketsOffWay(const SearchSpace& space, int b, const SoftPa
       const GridPose o = g.pose(q);
       return std::max(std::abs(o.x - p.x), std::abs(o.y - p.y)) >= spacing;
     });
-    if (apart && clearOfWay(space, b, s, way) && holdable(space, b, table, s)) pockets.push_back(s);
+    // With `beside`, the count above found no way cell.
+    const bool clear = beside != nullptr || clearOfWay(space, b, s, way);
+    if (apart && clear && holdable(b, table, s)) pockets.push_back(s);
     return static_cast<int>(pockets.size()) < options.max_pockets;
   });
   if (beside != nullptr && static_cast<int>(pockets.size()) < options.max_pockets) {
@@ -90,7 +92,7 @@ std::vector<StateId> pocketsOffWay(const SearchSpace& space, int b, const SoftPa
                      [](const auto& x, const auto& y) { return x.first < y.first; });
     for (const auto& [covered, s] : covering) {
       if (beside->size() >= count) break;
-      if (holdable(space, b, table, s)) beside->push_back(s);
+      if (holdable(b, table, s)) beside->push_back(s);
     }
   }
   return pockets;
