@@ -311,9 +311,11 @@ class Parking {
   // free for good.
   bool leg(int a, int t0, StateId to, int t1, int max_delay) {
     const StateId from = paths_[a].back();
+    const long long budget = options_.max_expansions - spent_;
     const SafeIntervalResult found =
-        safeIntervalSegment(space_, a, table_, from, t0, to, t1, max_delay, deadline_,
-                            options_.max_expansions - spent_);
+        t1 == SoftPathTable::kNever
+            ? safeIntervalHome(space_, a, table_, from, t0, deadline_, budget)
+            : safeIntervalSegment(space_, a, table_, from, t0, to, t1, max_delay, deadline_, budget);
     spent_ += found.expansions;
     last_outcome_ = found.outcome;
     if (found.outcome != SafeIntervalResult::Outcome::Found || found.path.empty() ||

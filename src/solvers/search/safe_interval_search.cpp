@@ -5,90 +5,15 @@
 #include <cstdlib>
 #include <memory>
 
-#include "node_table.h"
-#include "stable_pool.h"
+#include "sipp_memory.h"
 
 namespace fleet_planner {
 
+thread_local std::unique_ptr<sipp_detail::SearchMemory> sipp_detail::MemoryLease::idle_;
+
 namespace {
 
-constexpr int kNever = SoftPathTable::kNever;
-
-// Steps during which a motion collides: sorted, disjoint, non-adjacent intervals (inclusive;
-// second == kNever: from first on).
-using Unsafe = PoolRun<std::pair<int, int>>;
-
-struct Interval {
-  int first, last;  // steps during which waiting is safe, inclusive; last == kNever: for good
-};
-
-struct Node {
-  StateId s;
-  int interval;
-  int g;  // arrival time
-  int f;
-  int parent;
-};
-
-// What a search allocates, kept from one search to the next on the same thread: a parking
-// plan makes thousands of searches, and allocating and first touching their memory anew each
-// time cost about a tenth of its time.
-struct SearchMemory {
-  // Sipp's answers so far, by (state, action) and by state: indices into unsafe and intervals.
-  NodeTable unsafe_index, intervals_index;
-  std::vector<Unsafe> unsafe;
-  std::vector<PoolRun<Interval>> intervals;
-  StablePool<std::pair<int, int>> run_pool;
-  StablePool<Interval> interval_pool;
-  std::vector<std::pair<int, int>> merged, runs;  // Sipp's scratch
-  std::vector<Interval> interval_scratch;
-  // searchBetween's nodes, (state, interval) -> node, and open list (a heap of the nodes' f, g
-  // and index: its comparisons read the heap alone).
-  struct Open {
-    int f, g, index;
-  };
-  std::vector<Node> nodes;
-  NodeTable best;
-  std::vector<Open> open;
-
-  void clear() {
-    unsafe_index.clear();
-    intervals_index.clear();
-    best.clear();
-    unsafe.clear();
-    intervals.clear();
-    run_pool.clear();
-    interval_pool.clear();
-    nodes.clear();
-    open.clear();
-  }
-  std::size_t bytes() const {
-    return unsafe_index.bytes() + intervals_index.bytes() + best.bytes() + run_pool.bytes() +
-           interval_pool.bytes() + unsafe.capacity() * sizeof(Unsafe) +
-           intervals.capacity() * sizeof(PoolRun<Interval>) + nodes.capacity() * sizeof(Node) +
-           open.capacity() * sizeof(Open);
-  }
-};
-
-// The thread's SearchMemory for one search, cleared; a new one if the thread's is taken (or
-// was dropped). Kept for the thread's next search unless it grew past kKeptBytes.
-class MemoryLease {
- public:
-  MemoryLease() : held_(idle_ ? std::move(idle_) : std::make_unique<SearchMemory>()) { held_->clear(); }
-  ~MemoryLease() {
-    if (!idle_ && held_->bytes() <= kKeptBytes) idle_ = std::move(held_);
-  }
-  MemoryLease(const MemoryLease&) = delete;
-  MemoryLease& operator=(const MemoryLease&) = delete;
-  SearchMemory& memory() { return *held_; }
-
- private:
-  static constexpr std::size_t kKeptBytes = std::size_t{64} << 20;
-  std::unique_ptr<SearchMemory> held_;
-  static thread_local std::unique_ptr<SearchMemory> idle_;
-};
-
-thread_local std::unique_ptr<SearchMemory> MemoryLease::idle_;
+using namespace sipp_detail;
 
 class Sipp {
  public:
@@ -433,6 +358,43 @@ SafeIntervalResult safeIntervalSearch(const SearchSpace& space, int a, const Sof
                                       int max_arrival, double weight) {
   return searchBetween(space, a, others, space.start(a), 0, space.target(a), kNever, 0, deadline,
                        max_expansions, max_arrival, weight);
+}
+
+SafeIntervalResult safeIntervalHome(const SearchSpace& space, int a, const SoftPathTable& others,
+                                    StateId from, int t0, const Deadline& deadline,
+                                    long long max_expansions) {
+  const StateId goal = space.target(a);
+  const int d = space.distance(a, from);
+  const int lead = 2 * d + kHomeLeadSteps;  // steps before `ready` at which it departs
+  int ready = kNever, depart = -1;
+  if (d >= 0) {
+    MemoryLease lease;
+    Sipp sipp(space, a, others, t0, lease.memory());
+    const PoolRun<Interval> home = sipp.intervals(goal);
+    if (!home.empty() && home.back().last == kNever) ready = home.back().first;
+    if (ready != kNever && ready - lead > t0) {
+      for (const Interval& i : sipp.intervals(from)) {
+        if (i.first <= t0 && t0 <= i.last && (i.last == kNever || i.last >= ready - lead)) depart = ready - lead;
+      }
+    }
+  }
+  long long spent = 0;
+  if (depart > t0) {
+    // Arrivals within d + kHomeLeadSteps after `ready`: time for a detour as long as its way
+    // (and as long again after `ready`); past them the earliest arrival is searched.
+    SafeIntervalResult late = searchBetween(space, a, others, from, depart, goal, kNever, 0, deadline,
+                                            max_expansions, ready + lead - d);
+    spent = late.expansions;
+    if (late.outcome == SafeIntervalResult::Outcome::Found) {
+      late.path.insert(late.path.begin(), static_cast<std::size_t>(depart - t0), from);
+      return late;
+    }
+    if (late.outcome == SafeIntervalResult::Outcome::Expired) return late;
+  }
+  SafeIntervalResult r = searchBetween(space, a, others, from, t0, goal, kNever, 0, deadline,
+                                       std::max(0LL, max_expansions - spent));
+  r.expansions += spent;
+  return r;
 }
 
 SafeIntervalResult safeIntervalSegment(const SearchSpace& space, int a,

@@ -33,6 +33,18 @@ SafeIntervalResult safeIntervalSearch(const SearchSpace& space, int a, const Sof
                                       int max_arrival = SoftPathTable::kNever,
                                       double weight = 1.0);
 
+/// A collision-free way of agent a home, held for good, from state `from` at step t0 (the path
+/// holds the states from t0 on). When its target is free for good only from a step `ready`
+/// much later than a could get there, the earliest arrival costs a search of every state it
+/// could wait in before `ready`; instead a first waits where it stands, if it safely can, and
+/// departs kHomeLeadSteps plus twice its distance before `ready`, arriving by kHomeLeadSteps
+/// plus its distance after `ready`. Otherwise, or when that finds no way, the
+/// earliest arrival (as safeIntervalSegment). Not always the earliest arrival.
+SafeIntervalResult safeIntervalHome(const SearchSpace& space, int a, const SoftPathTable& others,
+                                    StateId from, int t0, const Deadline& deadline,
+                                    long long max_expansions);
+constexpr int kHomeLeadSteps = 8;
+
 /// A collision-free piece of agent a's way, to splice into its path: from state `from` at step
 /// t0 to state `to`, reached by step t1 and held until t1, or reached at a step t1 + d with
 /// 0 < d <= max_delay (the path then holds the states at steps t0..t1 + d: d is the delay the
