@@ -255,9 +255,10 @@ std::optional<SolveResult> LnsSearch::initialPath(int a, StatePath& path) {
 // to 64 times the base), so that a wait or a detour that a small cost would not pay for is
 // found in the end; a collision-free path resets it.
 SoftSearchResult LnsSearch::search(int a) {
-  // A collision-free path first (safe intervals: long waits are cheap there), if there is one.
-  const SafeIntervalResult free = safeIntervalSearch(space_, a, table_, problem_.deadline,
-                                                     options_.max_expansions_per_search);
+  // A collision-free path first (safe intervals: long waits are cheap there), if there is one;
+  // a robot whose target is passed late waits at its start where it can (safeIntervalHome).
+  const SafeIntervalResult free = safeIntervalHome(space_, a, table_, space_.start(a), 0, problem_.deadline,
+                                                   options_.max_expansions_per_search);
   stats_.low_level_expansions += free.expansions;
   if (free.outcome == SafeIntervalResult::Outcome::Found) {
     escalation_[a] = 1;
