@@ -238,11 +238,14 @@ int stepsBetween(const StateGraph& g, StateId s, StateId goal) {
 // Earliest-arriving collision-free way of agent a from `from` at step t0 to `goal`: held for
 // good (t1 == kNever; `goal` is then a's target), or reached by step t1 and held until t1, or
 // reached later, by step t1 + max_delay.
-// With t1 == kNever, arrivals after `max_arrival` are not searched.
+// With t1 == kNever, arrivals after `max_arrival` are not searched; with `wait_first` too, the
+// search first departs late where the agent can wait (safeIntervalHome), then, if that finds
+// nothing, from t0, its intervals kept.
 SafeIntervalResult searchBetween(const SearchSpace& space, int a, const SoftPathTable& others,
                                  StateId from, int t0, StateId goal, int t1, int max_delay,
                                  const Deadline& deadline, long long max_expansions,
-                                 int max_arrival = kNever, double weight = 1.0) {
+                                 int max_arrival = kNever, double weight = 1.0,
+                                 bool wait_first = false) {
   SafeIntervalResult result;
   const StateGraph& g = space.graph(a);
   if (space.distance(a, from) < 0) return result;
@@ -256,6 +259,20 @@ SafeIntervalResult searchBetween(const SearchSpace& space, int a, const SoftPath
     if (first[i].first <= t0 && (first[i].last == kNever || t0 <= first[i].last)) first_interval = i;
   }
   if (first_interval < 0) return result;  // someone sweeps `from` at t0
+  // The late departure: kHomeLeadSteps plus twice the distance before the target is free for
+  // good (`ready`), if the agent can wait at `from` until then; arrivals bounded by
+  // kHomeLeadSteps plus the distance after `ready`.
+  int late = t0, late_bound = max_arrival;
+  const PoolRun<Interval> home = wait_first && forever ? sipp.intervals(goal) : PoolRun<Interval>{};
+  if (!home.empty() && home.back().last == kNever) {
+    const int d = space.distance(a, from), ready = home.back().first;
+    const int depart = ready - 2 * d - kHomeLeadSteps, last = first[first_interval].last;
+    if (depart > t0 && (last == kNever || last >= depart)) {
+      late = depart;
+      late_bound = std::min(max_arrival, ready + d + kHomeLeadSteps);
+    }
+  }
+  int bound = late_bound;
 
   auto heuristic = [&](StateId s) {
     return forever ? space.distance(a, s) : stepsBetween(g, s, goal);
@@ -273,7 +290,7 @@ SafeIntervalResult searchBetween(const SearchSpace& space, int a, const SoftPath
   std::vector<SearchMemory::Open>& open = memory.open;  // a heap: the node to expand next in front
   auto push = [&](StateId s, int interval, int arrival, int parent) {
     const int h = heuristic(s);
-    if (arrival + h > (forever ? max_arrival : t1 + max_delay)) return;  // cannot reach the goal in time
+    if (arrival + h > (forever ? bound : t1 + max_delay)) return;  // cannot reach the goal in time
     const int f = weight == 1.0 ? arrival + h : arrival + static_cast<int>(weight * h);
     const std::uint64_t k = key(s, interval);
     const int* known = best.find(k);
@@ -283,70 +300,78 @@ SafeIntervalResult searchBetween(const SearchSpace& space, int a, const SoftPath
     open.push_back({f, arrival, static_cast<int>(nodes.size()) - 1});
     std::push_heap(open.begin(), open.end(), worse);
   };
-  push(from, first_interval, t0, -1);
-
-  while (!open.empty()) {
-    if ((result.expansions & 255) == 0 && deadline.expired()) {
-      result.outcome = SafeIntervalResult::Outcome::Expired;
-      return result;
-    }
-    if (result.expansions >= max_expansions) {
-      result.outcome = SafeIntervalResult::Outcome::NodeLimit;
-      return result;
-    }
-    const int index = open.front().index;
-    std::pop_heap(open.begin(), open.end(), worse);
-    open.pop_back();
-    const Node node = nodes[index];
-    if (*best.find(key(node.s, node.interval)) != index) continue;
-    ++result.expansions;
-    const Interval here = sipp.intervals(node.s)[node.interval];
-    // Finite t1: the agent can wait here until t1 (an arrival after t1 lies in `here` too).
-    const bool arrived = forever ? here.last == kNever : here.last >= t1 - 1;
-    if (node.s == goal && arrived) {
-      std::vector<int> chain;
-      for (int i = index; i >= 0; i = nodes[i].parent) chain.push_back(i);
-      std::reverse(chain.begin(), chain.end());
-      for (std::size_t k = 0; k < chain.size(); ++k) {
-        const Node& n = nodes[chain[k]];
-        const int until = k + 1 < chain.size() ? nodes[chain[k + 1]].g
-                          : forever                ? n.g + 1
-                                                   : std::max(t1, n.g) + 1;
-        for (int t = n.g; t < until; ++t) result.path.push_back(n.s);
+  // One pass from the late departure, if any, then (if it found nothing) one from t0.
+  for (int pass = late != t0 ? 0 : 1; pass < 2; ++pass) {
+    const int begin = pass == 0 ? late : t0;
+    bound = pass == 0 ? late_bound : max_arrival;
+    nodes.clear();
+    best.clear();
+    open.clear();
+    push(from, first_interval, begin, -1);
+    while (!open.empty()) {
+      if ((result.expansions & 255) == 0 && deadline.expired()) {
+        result.outcome = SafeIntervalResult::Outcome::Expired;
+        return result;
       }
-      result.outcome = SafeIntervalResult::Outcome::Found;
-      return result;
-    }
-    g.forEachSuccessor(node.s, [&](Action act, StateId next) {
-      if (act == Action::Wait || space.distance(a, next) < 0 || !space.allows(a, node.s, act))
-        return;
-      const PoolRun<Interval> there = sipp.intervals(next);
-      // A move that decomposes (SearchSpace::moveExtra) collides during step t iff waiting at
-      // node.s or at next during t does, or its extra cells meet someone then. Departing at t
-      // within `here` and arriving at t + 1 within there[j] (t + 1 <= there[j].last) leaves
-      // only t = there[j].first - 1 to the body after, always unsafe when it is a step of the
-      // search (the interval begins after an unsafe step): the departures from
-      // there[j].first on, against the extra cells alone.
-      const CellSet* extra = space.moveExtra(a, g.pose(node.s).heading, act);
-      Unsafe move;
-      bool known = false;  // the move's unsafe steps are read only if some interval of next may be reached
-      // The first interval of next that lasts until node.g + 1 (they are sorted and disjoint).
-      const int skip = static_cast<int>(
-          std::lower_bound(there.begin(), there.end(), node.g + 1,
-                           [](const Interval& i, int t) { return i.last < t; }) -
-          there.begin());
-      for (int j = skip; j < static_cast<int>(there.size()); ++j) {
-        if (here.last != kNever && there[j].first > here.last + 1) break;
-        if (!known) {
-          move = extra != nullptr ? sipp.beyondBodies(node.s, act, *extra) : sipp.unsafe(node.s, act);
-          known = true;
+      if (result.expansions >= max_expansions) {
+        result.outcome = SafeIntervalResult::Outcome::NodeLimit;
+        return result;
+      }
+      const int index = open.front().index;
+      std::pop_heap(open.begin(), open.end(), worse);
+      open.pop_back();
+      const Node node = nodes[index];
+      if (*best.find(key(node.s, node.interval)) != index) continue;
+      ++result.expansions;
+      const Interval here = sipp.intervals(node.s)[node.interval];
+      // Finite t1: the agent can wait here until t1 (an arrival after t1 lies in `here` too).
+      const bool arrived = forever ? here.last == kNever : here.last >= t1 - 1;
+      if (node.s == goal && arrived) {
+        std::vector<int> chain;
+        for (int i = index; i >= 0; i = nodes[i].parent) chain.push_back(i);
+        std::reverse(chain.begin(), chain.end());
+        for (std::size_t k = 0; k < chain.size(); ++k) {
+          const Node& n = nodes[chain[k]];
+          const int until = k + 1 < chain.size() ? nodes[chain[k + 1]].g
+                            : forever                ? n.g + 1
+                                                     : std::max(t1, n.g) + 1;
+          for (int t = n.g; t < until; ++t) result.path.push_back(n.s);
         }
-        const int hi = std::min(here.last, there[j].last == kNever ? kNever : there[j].last - 1);
-        const int earliest = extra != nullptr ? there[j].first : there[j].first - 1;
-        const int departure = Sipp::earliestDeparture(move, std::max(node.g, earliest), hi);
-        if (departure >= 0) push(next, j, departure + 1, index);
+        result.path.insert(result.path.begin(), static_cast<std::size_t>(begin - t0), from);  // its wait
+        result.outcome = SafeIntervalResult::Outcome::Found;
+        return result;
       }
-    });
+      g.forEachSuccessor(node.s, [&](Action act, StateId next) {
+        if (act == Action::Wait || space.distance(a, next) < 0 || !space.allows(a, node.s, act))
+          return;
+        const PoolRun<Interval> there = sipp.intervals(next);
+        // A move that decomposes (SearchSpace::moveExtra) collides during step t iff waiting at
+        // node.s or at next during t does, or its extra cells meet someone then. Departing at t
+        // within `here` and arriving at t + 1 within there[j] (t + 1 <= there[j].last) leaves
+        // only t = there[j].first - 1 to the body after, always unsafe when it is a step of the
+        // search (the interval begins after an unsafe step): the departures from
+        // there[j].first on, against the extra cells alone.
+        const CellSet* extra = space.moveExtra(a, g.pose(node.s).heading, act);
+        Unsafe move;
+        bool known = false;  // the move's unsafe steps are read only if some interval of next may be reached
+        // The first interval of next that lasts until node.g + 1 (they are sorted and disjoint).
+        const int skip = static_cast<int>(
+            std::lower_bound(there.begin(), there.end(), node.g + 1,
+                             [](const Interval& i, int t) { return i.last < t; }) -
+            there.begin());
+        for (int j = skip; j < static_cast<int>(there.size()); ++j) {
+          if (here.last != kNever && there[j].first > here.last + 1) break;
+          if (!known) {
+            move = extra != nullptr ? sipp.beyondBodies(node.s, act, *extra) : sipp.unsafe(node.s, act);
+            known = true;
+          }
+          const int hi = std::min(here.last, there[j].last == kNever ? kNever : there[j].last - 1);
+          const int earliest = extra != nullptr ? there[j].first : there[j].first - 1;
+          const int departure = Sipp::earliestDeparture(move, std::max(node.g, earliest), hi);
+          if (departure >= 0) push(next, j, departure + 1, index);
+        }
+      });
+    }
   }
   return result;
 }
@@ -363,38 +388,8 @@ SafeIntervalResult safeIntervalSearch(const SearchSpace& space, int a, const Sof
 SafeIntervalResult safeIntervalHome(const SearchSpace& space, int a, const SoftPathTable& others,
                                     StateId from, int t0, const Deadline& deadline,
                                     long long max_expansions) {
-  const StateId goal = space.target(a);
-  const int d = space.distance(a, from);
-  const int lead = 2 * d + kHomeLeadSteps;  // steps before `ready` at which it departs
-  int ready = kNever, depart = -1;
-  if (d >= 0) {
-    MemoryLease lease;
-    Sipp sipp(space, a, others, t0, lease.memory());
-    const PoolRun<Interval> home = sipp.intervals(goal);
-    if (!home.empty() && home.back().last == kNever) ready = home.back().first;
-    if (ready != kNever && ready - lead > t0) {
-      for (const Interval& i : sipp.intervals(from)) {
-        if (i.first <= t0 && t0 <= i.last && (i.last == kNever || i.last >= ready - lead)) depart = ready - lead;
-      }
-    }
-  }
-  long long spent = 0;
-  if (depart > t0) {
-    // Arrivals within d + kHomeLeadSteps after `ready`: time for a detour as long as its way
-    // (and as long again after `ready`); past them the earliest arrival is searched.
-    SafeIntervalResult late = searchBetween(space, a, others, from, depart, goal, kNever, 0, deadline,
-                                            max_expansions, ready + lead - d);
-    spent = late.expansions;
-    if (late.outcome == SafeIntervalResult::Outcome::Found) {
-      late.path.insert(late.path.begin(), static_cast<std::size_t>(depart - t0), from);
-      return late;
-    }
-    if (late.outcome == SafeIntervalResult::Outcome::Expired) return late;
-  }
-  SafeIntervalResult r = searchBetween(space, a, others, from, t0, goal, kNever, 0, deadline,
-                                       std::max(0LL, max_expansions - spent));
-  r.expansions += spent;
-  return r;
+  return searchBetween(space, a, others, from, t0, space.target(a), kNever, 0, deadline, max_expansions,
+                       kNever, 1.0, /*wait_first=*/true);
 }
 
 SafeIntervalResult safeIntervalSegment(const SearchSpace& space, int a,
