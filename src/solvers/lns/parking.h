@@ -283,9 +283,10 @@ class Parking {
 
   // Agent a's path extended from its end to `to` (its target, held for good; or a pocket),
   // collision-free around everybody else; false (the path as it was) if there is none within
-  // the budget. A pocket is reached at the earliest if nobody passes it later, else held from
-  // then until everybody else has stopped (after that only final states, which the pockets
-  // offered miss, and robots of other subproblems parked for good can meet it).
+  // the budget. A pocket is reached at the earliest if nobody passes it later, else at the
+  // earliest after the last pass over it (safeIntervalPocket): not after everybody else has
+  // stopped, which put each such leg after the whole plan so far and everything planned next
+  // after it.
   bool driveTo(int a, StateId to) {
     const StateId from = paths_[a].back();
     if (from == to) return to == space_.target(a);
@@ -293,29 +294,29 @@ class Parking {
     table_.remove(a);
     bool ok = false;
     if (to == space_.target(a)) {
-      ok = leg(a, t0, to, SoftPathTable::kNever, 0);
+      ok = leg(a, t0, to, Arrival::Home);
     } else {
-      ok = leg(a, t0, to, t0, SoftPathTable::kNever / 2);
-      if (!ok && last_outcome_ == SafeIntervalResult::Outcome::Found) {
-        const int settled =
-            std::max({t0, table_.lastMove() + 1, space_.reservations().lastChange() + 1});
-        ok = leg(a, t0, to, settled, SoftPathTable::kNever / 2);
-      }
+      ok = leg(a, t0, to, Arrival::Earliest);
+      if (!ok && last_outcome_ == SafeIntervalResult::Outcome::Found) ok = leg(a, t0, to, Arrival::HeldForGood);
     }
     table_.insert(a, paths_[a]);
     return ok;
   }
 
-  // One safe interval search from where a's path ends, at step t0, with safeIntervalSegment's
-  // t1 and max_delay; its path appended to a's (out of the table) if the pose it ends at is
-  // free for good.
-  bool leg(int a, int t0, StateId to, int t1, int max_delay) {
+  // How a leg arrives: home (held for good), at a pocket at the earliest, or at a pocket held
+  // for good from its arrival.
+  enum class Arrival { Home, Earliest, HeldForGood };
+
+  // One safe interval search from where a's path ends, at step t0; its path appended to a's
+  // (out of the table) if the pose it ends at is free for good.
+  bool leg(int a, int t0, StateId to, Arrival arrival_kind) {
     const StateId from = paths_[a].back();
     const long long budget = options_.max_expansions - spent_;
     const SafeIntervalResult found =
-        t1 == SoftPathTable::kNever
-            ? safeIntervalHome(space_, a, table_, from, t0, deadline_, budget)
-            : safeIntervalSegment(space_, a, table_, from, t0, to, t1, max_delay, deadline_, budget);
+        arrival_kind == Arrival::Home ? safeIntervalHome(space_, a, table_, from, t0, deadline_, budget)
+        : arrival_kind == Arrival::HeldForGood
+            ? safeIntervalPocket(space_, a, table_, from, t0, to, deadline_, budget)
+            : safeIntervalSegment(space_, a, table_, from, t0, to, t0, SoftPathTable::kNever / 2, deadline_, budget);
     spent_ += found.expansions;
     last_outcome_ = found.outcome;
     if (found.outcome != SafeIntervalResult::Outcome::Found || found.path.empty() ||

@@ -236,20 +236,25 @@ int stepsBetween(const StateGraph& g, StateId s, StateId goal) {
 }
 
 // Earliest-arriving collision-free way of agent a from `from` at step t0 to `goal`: held for
-// good (t1 == kNever; `goal` is then a's target), or reached by step t1 and held until t1, or
-// reached later, by step t1 + max_delay.
-// With t1 == kNever, arrivals after `max_arrival` are not searched; with `wait_first` too, the
+// good (t1 == kNever; `goal` is then a's target; or `hold`: any goal, t1 unused), or reached
+// by step t1 and held until t1, or reached later, by step t1 + max_delay.
+// Held for good, arrivals after `max_arrival` are not searched; with `wait_first` too, the
 // search first departs late where the agent can wait (safeIntervalHome), then, if that finds
 // nothing, from t0, its intervals kept.
 SafeIntervalResult searchBetween(const SearchSpace& space, int a, const SoftPathTable& others,
                                  StateId from, int t0, StateId goal, int t1, int max_delay,
                                  const Deadline& deadline, long long max_expansions,
                                  int max_arrival = kNever, double weight = 1.0,
-                                 bool wait_first = false) {
+                                 bool wait_first = false, bool hold = false) {
   SafeIntervalResult result;
   const StateGraph& g = space.graph(a);
   if (space.distance(a, from) < 0) return result;
-  const bool forever = t1 == kNever;
+  const bool to_target = t1 == kNever;
+  const bool forever = to_target || hold;
+  // The distances are to the target: any other goal has the lower bound of its steps.
+  auto heuristic = [&](StateId s) {
+    return to_target ? space.distance(a, s) : stepsBetween(g, s, goal);
+  };
   MemoryLease lease;
   SearchMemory& memory = lease.memory();
   Sipp sipp(space, a, others, t0, memory);
@@ -259,13 +264,13 @@ SafeIntervalResult searchBetween(const SearchSpace& space, int a, const SoftPath
     if (first[i].first <= t0 && (first[i].last == kNever || t0 <= first[i].last)) first_interval = i;
   }
   if (first_interval < 0) return result;  // someone sweeps `from` at t0
-  // The late departure: kHomeLeadSteps plus twice the distance before the target is free for
+  // The late departure: kHomeLeadSteps plus twice the distance before the goal is free for
   // good (`ready`), if the agent can wait at `from` until then; arrivals bounded by
   // kHomeLeadSteps plus the distance after `ready`.
   int late = t0, late_bound = max_arrival;
   const PoolRun<Interval> home = wait_first && forever ? sipp.intervals(goal) : PoolRun<Interval>{};
   if (!home.empty() && home.back().last == kNever) {
-    const int d = space.distance(a, from), ready = home.back().first;
+    const int d = heuristic(from), ready = home.back().first;
     const int depart = ready - 2 * d - kHomeLeadSteps, last = first[first_interval].last;
     if (depart > t0 && (last == kNever || last >= depart)) {
       late = depart;
@@ -274,9 +279,6 @@ SafeIntervalResult searchBetween(const SearchSpace& space, int a, const SoftPath
   }
   int bound = late_bound;
 
-  auto heuristic = [&](StateId s) {
-    return forever ? space.distance(a, s) : stepsBetween(g, s, goal);
-  };
   std::vector<Node>& nodes = memory.nodes;
   NodeTable& best = memory.best;  // (state, interval) -> node
   auto key = [](StateId s, int i) {
@@ -390,6 +392,13 @@ SafeIntervalResult safeIntervalHome(const SearchSpace& space, int a, const SoftP
                                     long long max_expansions) {
   return searchBetween(space, a, others, from, t0, space.target(a), kNever, 0, deadline, max_expansions,
                        kNever, 1.0, /*wait_first=*/true);
+}
+
+SafeIntervalResult safeIntervalPocket(const SearchSpace& space, int a, const SoftPathTable& others,
+                                      StateId from, int t0, StateId pocket, const Deadline& deadline,
+                                      long long max_expansions) {
+  return searchBetween(space, a, others, from, t0, pocket, t0, 0, deadline, max_expansions, kNever, 1.0,
+                       /*wait_first=*/true, /*hold=*/true);
 }
 
 SafeIntervalResult safeIntervalSegment(const SearchSpace& space, int a,

@@ -45,6 +45,15 @@ SafeIntervalResult safeIntervalHome(const SearchSpace& space, int a, const SoftP
                                     long long max_expansions);
 constexpr int kHomeLeadSteps = 8;
 
+/// A collision-free way of agent a from state `from` at step t0 to `pocket`, held for good (the
+/// path holds the states from t0 on): the earliest arrival after the last step anybody in
+/// `others` (or another subproblem's timed path) sweeps the pocket, departing late first as
+/// safeIntervalHome does, with the pocket's lower bound of steps for the distance. NoPath if
+/// the pocket is never free for good (someone ends there).
+SafeIntervalResult safeIntervalPocket(const SearchSpace& space, int a, const SoftPathTable& others,
+                                      StateId from, int t0, StateId pocket, const Deadline& deadline,
+                                      long long max_expansions);
+
 /// A collision-free piece of agent a's way, to splice into its path: from state `from` at step
 /// t0 to state `to`, reached by step t1 and held until t1, or reached at a step t1 + d with
 /// 0 < d <= max_delay (the path then holds the states at steps t0..t1 + d: d is the delay the
