@@ -16,6 +16,7 @@ void LaCbs::configure(const BackendOptionValues& values) {
   OptionBinder bind(name(), values);
   bind.flag("bypass", o.bypass);
   bind.integer("max_candidate_conflicts", o.max_candidate_conflicts, 1, 1000);
+  bind.flag("target_candidates", o.target_candidates);
   bind.integer("pairwise_delay_nodes", o.pairwise_delay_nodes, 0, kMaxCount);
   bind.integer("pairwise_delay_expansions", o.pairwise_delay_expansions, 0, kMaxCount);
   bind.integer("max_low_level_nodes", o.max_low_level_nodes, 1, kMaxCount);

@@ -31,6 +31,18 @@ int pathCost(const StatePath& path) {
   return t;
 }
 
+bool holdsTargetAt(const SearchSpace& space, const StatePath& path, int agent, int t) {
+  return pathCost(path) <= t && space.target(agent) == path.back();
+}
+
+std::vector<AgentConflict> targetConflicts(const SearchSpace& space, const std::vector<StatePath>& paths) {
+  return earliestConflictPerPair(space, paths, static_cast<int>(paths.size() * paths.size()),
+                                 [&](const AgentConflict& c) {
+                                   return holdsTargetAt(space, paths[c.a], c.a, c.t) ||
+                                          holdsTargetAt(space, paths[c.b], c.b, c.t);
+                                 });
+}
+
 std::array<CbsBranch, 2> splitConflict(const SearchSpace& space, const std::vector<StatePath>& paths,
                                        const AgentConflict& conflict) {
   using Kind = CbsConstraint::Kind;
@@ -38,7 +50,7 @@ std::array<CbsBranch, 2> splitConflict(const SearchSpace& space, const std::vect
   // The conflict's time t is a time (vertex) or the step t -> t + 1 (transfer); either way an
   // agent whose cost is at most t stands on its target footprint throughout.
   for (const int holder : {conflict.a, conflict.b}) {
-    if (pathCost(paths[holder]) > conflict.t || space.target(holder) != paths[holder].back()) continue;
+    if (!holdsTargetAt(space, paths[holder], holder, conflict.t)) continue;
     const int other = holder == conflict.a ? conflict.b : conflict.a;
     branches[0].replan = holder;
     branches[0].constraints = {{Kind::CostAbove, holder, conflict.t, {}, -1}};

@@ -92,16 +92,24 @@ class CbsSearch {
       std::vector<StatePath> current = pathsOf(id);
       std::optional<EvaluatedSplit> chosen;
       while (!chosen) {  // bypass may adopt paths and look again at the same node
-        const std::vector<AgentConflict> candidates =
+        const std::vector<AgentConflict> earliest =
             earliestConflictPerPair(space_, current, std::max(1, options_.max_candidate_conflicts));
-        if (candidates.empty()) {
+        if (earliest.empty()) {
           lower_bound_ = nodes_[id].cost;
           return success(current);
         }
-        const AgentConflict& first = candidates.front();
+        const AgentConflict& first = earliest.front();
         if (first.t == 0 && first.kind == AgentConflict::Kind::Vertex) {
           return failure(SolveStatus::Infeasible,
                          space_.label(first.a) + " and " + space_.label(first.b) + " overlap at their starts");
+        }
+        std::vector<AgentConflict> candidates;
+        if (options_.target_candidates) candidates = targetConflicts(space_, current);
+        for (const AgentConflict& c : earliest) {
+          if (std::none_of(candidates.begin(), candidates.end(), [&](const AgentConflict& d) {
+                return d.a == c.a && d.b == c.b && d.t == c.t && d.kind == c.kind;
+              }))
+            candidates.push_back(c);
         }
         bool adopted = false;
         for (const AgentConflict& conflict : candidates) {

@@ -73,13 +73,19 @@ std::optional<AgentConflict> firstConflict(const SearchSpace& space, const std::
 
 std::vector<AgentConflict> earliestConflictPerPair(const SearchSpace& space, const std::vector<StatePath>& paths,
                                                    int max_count) {
+  return earliestConflictPerPair(space, paths, max_count, [](const AgentConflict&) { return true; });
+}
+
+std::vector<AgentConflict> earliestConflictPerPair(const SearchSpace& space, const std::vector<StatePath>& paths,
+                                                   int max_count,
+                                                   const std::function<bool(const AgentConflict&)>& accept) {
   std::vector<AgentConflict> found;
   if (max_count <= 0) return found;
   const std::size_t n = paths.size();
   std::vector<bool> seen(n * n, false);
   forEachConflict(space, paths, [&](const AgentConflict& c) {
     const std::size_t pair = static_cast<std::size_t>(c.a) * n + static_cast<std::size_t>(c.b);
-    if (seen[pair]) return false;
+    if (seen[pair] || !accept(c)) return false;
     seen[pair] = true;
     found.push_back(c);
     return static_cast<int>(found.size()) >= max_count;

@@ -39,6 +39,15 @@ struct CbsBranch {
 /// Path cost: the time from which the path holds its last state for good.
 int pathCost(const StatePath& path);
 
+/// Agent `agent` holds its target for good from time t on in its path (its cost is at most t).
+bool holdsTargetAt(const SearchSpace& space, const StatePath& path, int agent, int t);
+
+/// The earliest target conflict of each agent pair among `paths` (one where an agent already
+/// holds its target: splitConflict() splits it on that agent's cost), in the order of
+/// firstConflict(). The earliest conflict of a pair is often not one: two robots meet on the
+/// way, and only later does one of them park in the other's way.
+std::vector<AgentConflict> targetConflicts(const SearchSpace& space, const std::vector<StatePath>& paths);
+
 /// The two branches for `conflict` among `paths`: the target split if one of the agents holds
 /// its target from the conflict's time on (agent a checked first), else the cell split (a's
 /// branch first). In each branch the replanned agent's current path violates its constraints.

@@ -16,9 +16,11 @@
 ///
 /// High level: best-first over the constraint tree by f = sum of costs + an admissible pairwise
 /// delay heuristic (each conflicting pair of agents is bounded once by a small CBS over the
-/// pair), then fewer conflicts, then lower cost. At a node it plans the children of up to
-/// `max_candidate_conflicts` conflicts (the earliest of each agent pair) and branches on the
-/// first cardinal one (both children cost more), else semi-cardinal, else the earliest (ICBS
+/// pair), then fewer conflicts, then lower cost. At a node it plans the children of the earliest
+/// target conflict of each agent pair (`target_candidates`: one agent already parked on its
+/// target, which the pair often reaches only after meeting earlier on the way), then of up to
+/// `max_candidate_conflicts` conflicts (the earliest of each agent pair), and branches on the
+/// first cardinal one (both children cost more), else semi-cardinal, else the first (ICBS
 /// with the children's costs as the classification). A conflict where one agent already holds
 /// its target is split on that agent's cost (target reasoning); any other on a cell both agents
 /// cover, forbidden to one agent or the other at that time (vertex conflict) or during that step
@@ -38,6 +40,9 @@ struct LaCbsOptions {
   /// Conflicts (the earliest of each agent pair, earliest first) whose splits are planned and
   /// classified before branching; 1 branches on the earliest conflict.
   int max_candidate_conflicts = 4;
+  /// Also classify, first, the earliest target conflict of each pair (cbs_split.h), split on the
+  /// parked agent's cost, when it is not the pair's earliest conflict.
+  bool target_candidates = true;
   /// Constraint-tree nodes each pair bound may expand (see pairwise_delay.h); 0: no heuristic.
   long long pairwise_delay_nodes = 1000;
   /// Low-level expansions the pair bounds may spend beyond those of the tree itself (which they

@@ -2,6 +2,7 @@
 /// Conflicts among the agents of one subproblem, for the backends (the validator has its own,
 /// independent code). Paths are state ids at t = 0, 1, ...; an ended path stays at its end; an
 /// empty path is an agent left out (it conflicts with nobody).
+#include <functional>
 #include <optional>
 #include <utility>
 #include <vector>
@@ -32,6 +33,11 @@ std::optional<AgentConflict> firstConflict(const SearchSpace& space, const std::
 /// most `max_count` of them (the candidates LA-CBS classifies before it splits).
 std::vector<AgentConflict> earliestConflictPerPair(const SearchSpace& space, const std::vector<StatePath>& paths,
                                                    int max_count);
+
+/// Like earliestConflictPerPair(), over the conflicts `accept` returns true for only.
+std::vector<AgentConflict> earliestConflictPerPair(const SearchSpace& space, const std::vector<StatePath>& paths,
+                                                   int max_count,
+                                                   const std::function<bool(const AgentConflict&)>& accept);
 
 /// The agent pairs (a < b) with at least one conflict, sorted.
 std::vector<std::pair<int, int>> conflictingPairs(const SearchSpace& space, const std::vector<StatePath>& paths);
