@@ -284,9 +284,8 @@ class Parking {
   // Agent a's path extended from its end to `to` (its target, held for good; or a pocket),
   // collision-free around everybody else; false (the path as it was) if there is none within
   // the budget. A pocket is reached at the earliest if nobody passes it later, else at the
-  // earliest after the last pass over it (safeIntervalPocket): not after everybody else has
-  // stopped, which put each such leg after the whole plan so far and everything planned next
-  // after it.
+  // earliest after the last pass over it (safeIntervalPocket), so that neither this leg nor
+  // the robot's later turns wait for the rest of the plan to end.
   bool driveTo(int a, StateId to) {
     const StateId from = paths_[a].back();
     if (from == to) return to == space_.target(a);
