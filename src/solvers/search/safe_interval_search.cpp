@@ -228,11 +228,13 @@ class Sipp {
 
 namespace {
 
-// Lower bound on the steps from s to `goal`: a move changes one coordinate by one cell, and a
-// different heading takes at least one rotation.
+// Lower bound on the steps from s to `goal`: a move changes one coordinate by the lattice step
+// (ActionModel::step cells), and a different heading takes at least one rotation.
 int stepsBetween(const StateGraph& g, StateId s, StateId goal) {
   const GridPose p = g.pose(s), q = g.pose(goal);
-  return std::abs(p.x - q.x) + std::abs(p.y - q.y) + (p.heading != q.heading ? 1 : 0);
+  const int step = g.actionModel().step;
+  return (std::abs(p.x - q.x) + step - 1) / step + (std::abs(p.y - q.y) + step - 1) / step +
+         (p.heading != q.heading ? 1 : 0);
 }
 
 // Earliest-arriving collision-free way of agent a from `from` at step t0 to `goal`: held for
