@@ -49,6 +49,10 @@ struct TimeBudget {
   /// plan, which costs more than planning them in it. Above 1: never.
   double whole_fleet_share = 0.5;
   std::size_t whole_fleet_min_robots = 16;
+  /// On the default lattice (PlanningOptions::lattice_step 0) of a step above 1: the fleet has
+  /// this share of the call's time there; if it times out, the rest goes to a lattice twice as
+  /// coarse (plan_fleet.h). 1: the default lattice has all of it.
+  double default_lattice_share = 2.0 / 3.0;
 };
 
 }  // namespace fleet_planner

@@ -36,7 +36,8 @@ struct PlanningResult : LayeredResult {
   int threads = 1;       ///< as used
   bool layered = true;   ///< as used: decomposed (false: raw)
   int lattice_step = 1;  ///< the lattice the plan was made on (cells)
-  /// Why each coarser lattice tried first was given up ("step 4: robot 'a' cannot reach ...").
+  /// Why each lattice tried before the one used was given up ("step 4: robot 'a' cannot reach
+  /// ..."), or, after a time-out on the default lattice, what the lattice twice as coarse did.
   std::vector<std::string> lattice_notes;
   /// The pre-check's per-robot problems (unreachable target, start or target overlaps): the
   /// status is INFEASIBLE when there are any, and nothing was planned.

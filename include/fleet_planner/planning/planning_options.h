@@ -47,7 +47,9 @@ struct PlanningOptions {
   /// default for the fleet (defaultLatticeStep: 1 for the paper's benchmark robots). A fleet that
   /// cannot be planned on it (a robot that cannot reach its target on it, connections that
   /// collide, a lattice plan proven impossible) is planned again on a lattice of half the step,
-  /// down to 1 (every such step is reported).
+  /// down to 1 (every such step is reported). On the default of a step above 1, a fleet that
+  /// times out within TimeBudget::default_lattice_share of the time is planned in the rest on a
+  /// lattice twice as coarse (plan_fleet.cpp).
   int lattice_step = 0;
   /// The action model; its `step` is set from lattice_step.
   ActionModel model;
