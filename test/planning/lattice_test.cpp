@@ -12,6 +12,7 @@
 #include "fleet_planner/runtime/random.h"
 #include "test_maps.h"
 #include "test_robots.h"
+#include "valid_on_cells.h"
 
 namespace fleet_planner::test {
 namespace {
@@ -29,14 +30,6 @@ PlanningOptions onLattice(int step) {
   return o;
 }
 
-::testing::AssertionResult validOnCells(const GridMap& map, const Instance& instance, const PlanningResult& r) {
-  if (!r.success()) return ::testing::AssertionFailure() << statusName(r.status) << ": " << r.reason;
-  ActionModel model;
-  model.step = r.lattice_step;
-  const ValidationResult v = validatePlan(map, instance, r.plan, model);
-  if (!v.valid()) return ::testing::AssertionFailure() << v.violation.message;
-  return ::testing::AssertionSuccess();
-}
 
 /// A 72 x 48 map with a few pillars, and `n` robots of 4-7 cells at random free, non-overlapping
 /// grid poses (seeded).

@@ -8,6 +8,7 @@
 #include "fleet_planner/planning/plan_fleet.h"
 #include "test_maps.h"
 #include "test_robots.h"
+#include "valid_on_cells.h"
 
 namespace fleet_planner::test {
 namespace {
@@ -25,14 +26,6 @@ PlanningOptions defaultLatticeWithoutTime() {
   return o;
 }
 
-::testing::AssertionResult validOnCells(const GridMap& map, const Instance& instance, const PlanningResult& r) {
-  if (!r.success()) return ::testing::AssertionFailure() << statusName(r.status) << ": " << r.reason;
-  ActionModel model;
-  model.step = r.lattice_step;
-  const ValidationResult v = validatePlan(map, instance, r.plan, model);
-  if (!v.valid()) return ::testing::AssertionFailure() << v.violation.message;
-  return ::testing::AssertionSuccess();
-}
 
 bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
 

@@ -1,0 +1,20 @@
+#pragma once
+// A planning answer checked as the planning tests need it: SUCCESS, and the plan valid on the
+// map's own cells by the independent validator, on the lattice it was made on.
+#include <gtest/gtest.h>
+
+#include "fleet_planner/model/plan_validator.h"
+#include "fleet_planner/planning/plan_fleet.h"
+
+namespace fleet_planner::test {
+
+inline ::testing::AssertionResult validOnCells(const GridMap& map, const Instance& instance, const PlanningResult& r) {
+  if (!r.success()) return ::testing::AssertionFailure() << statusName(r.status) << ": " << r.reason;
+  ActionModel model;
+  model.step = r.lattice_step;
+  const ValidationResult v = validatePlan(map, instance, r.plan, model);
+  if (!v.valid()) return ::testing::AssertionFailure() << v.violation.message;
+  return ::testing::AssertionSuccess();
+}
+
+}  // namespace fleet_planner::test
