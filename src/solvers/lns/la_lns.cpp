@@ -35,7 +35,8 @@ LnsSearch::LnsSearch(const SearchSpace& space, const Subproblem& problem, const 
       ideal_(n_),
       ideal_absent_(n_, false),
       escalation_(n_, 1),
-      growth_(options.neighborhood_size, options.stall_repairs, n_) {
+      growth_(options.neighborhood_size, n_ <= options.joint_robots ? options.knot_stall_repairs : options.stall_repairs,
+              n_) {
   weights_.fill(1.0);
 }
 
@@ -78,7 +79,8 @@ SolveResult LnsSearch::run() {
     }
     if (std::optional<SolveResult> stop = outOfBudget()) return *stop;
     if (growth_.exhausted() > 0 && mayGiveUp()) {
-      return timeout("stuck after " + std::to_string(options_.stall_repairs) +
+      return timeout("stuck after " +
+                     std::to_string(n_ <= options_.joint_robots ? options_.knot_stall_repairs : options_.stall_repairs) +
                      " repairs of every robot without fewer colliding pairs");
     }
     repair();

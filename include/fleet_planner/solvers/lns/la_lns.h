@@ -36,7 +36,8 @@
 /// among the static obstacles (INFEASIBLE, naming the robots); any other unsolved subproblem is
 /// TIMEOUT. Same input and seed, same plan. When the caller has something else to try
 /// (Subproblem::may_give_up), it answers TIMEOUT as soon as `stall_repairs` repairs with every
-/// agent in the neighbourhood bring no fewer colliding pairs, rather than at the deadline.
+/// agent in the neighbourhood bring no fewer colliding pairs (`knot_stall_repairs` for a
+/// subproblem of at most `joint_robots` robots), rather than at the deadline.
 #include "fleet_planner/solvers/solver.h"
 
 namespace fleet_planner {
@@ -47,6 +48,10 @@ struct LaLnsOptions {
   /// Repairs without a new lowest number of colliding pairs after which the neighbourhood
   /// doubles (up to every agent of the subproblem).
   int stall_repairs = 10;
+  /// The same for a subproblem of at most `joint_robots` robots: each of its repairs is already
+  /// the joint repair of all of it, every method of it (the same searches again, in another
+  /// order), so it is stuck sooner. Counts only for giving up (Subproblem::may_give_up).
+  int knot_stall_repairs = 3;
   /// Cost of one colliding step in the low level, in steps of path length.
   int collision_cost = 16;
   /// Expansions of one low-level search before it gives up.
