@@ -4,13 +4,13 @@
 #include <cmath>
 #include <memory>
 
+#include "../runtime/number_format.h"
 #include "fleet_planner/execution/earliest_schedule.h"
 #include "fleet_planner/model/plan_validator.h"
 #include "fleet_planner/model/robot_cells.h"
 #include "fleet_planner/planning/lattice.h"
 #include "fleet_planner/runtime/errors.h"
 #include "fleet_planner/runtime/memory_guard.h"
-#include "../runtime/number_format.h"
 
 namespace fleet_planner {
 
@@ -197,14 +197,17 @@ PlanningResult planFleet(const GridMap& map, const Instance& instance, const Pla
   // did not untie may come apart. Its answer is kept if it is a plan (or an internal error);
   // otherwise the first answer stands, with a note.
   const int first = initialLatticeStep(options, instance);
-  const bool second_chance = options.lattice_step <= 0 && first > 1 && options.budget.default_lattice_share < 1.0;
+  const bool second_chance =
+      options.lattice_step <= 0 && first > 1 && options.budget.default_lattice_share < 1.0;
   const Deadline first_deadline =
-      second_chance ? deadline.within(deadline.remaining() * options.budget.default_lattice_share) : deadline;
+      second_chance ? deadline.within(deadline.remaining() * options.budget.default_lattice_share)
+                    : deadline;
   LatticeAttempt attempt(map, instance, options, call, first_deadline, memory, result);
   int step = first;
   while (!attempt.run(step) && step > 1) step = std::max(1, step / 2);
   std::shared_ptr<const FleetGraphs> graphs = attempt.graphs();
-  if (second_chance && step == first && result.status == SolveStatus::Timeout && !deadline.expired()) {
+  if (second_chance && step == first && result.status == SolveStatus::Timeout &&
+      !deadline.expired()) {
     const int coarser = 2 * first;
     PlanningResult again;
     again.backend = result.backend;
@@ -212,18 +215,20 @@ PlanningResult planFleet(const GridMap& map, const Instance& instance, const Pla
     again.threads = result.threads;
     again.layered = result.layered;
     const std::string timed_out = "step " + std::to_string(first) + ": timed out after " +
-                                  io::formatNumber(std::round(since(call.started) * 10) / 10) + " s (" +
-                                  result.reason + ")";
+                                  io::formatNumber(std::round(since(call.started) * 10) / 10) +
+                                  " s (" + result.reason + ")";
     LatticeAttempt second(map, instance, options, call, deadline, memory, again);
     const bool answered = second.run(coarser);
     if (answered && (again.success() || again.status == SolveStatus::InternalError)) {
-      again.lattice_notes.insert(again.lattice_notes.begin(), result.lattice_notes.begin(), result.lattice_notes.end());
+      again.lattice_notes.insert(again.lattice_notes.begin(), result.lattice_notes.begin(),
+                                 result.lattice_notes.end());
       again.lattice_notes.push_back(timed_out + "; planned on step " + std::to_string(coarser));
       again.precompute_s += result.precompute_s;
       result = std::move(again);
       graphs = second.graphs();
     } else {
-      std::string why = answered ? std::string(statusName(again.status)) + ": " + again.reason : again.lattice_notes.back();
+      std::string why = answered ? std::string(statusName(again.status)) + ": " + again.reason
+                                 : again.lattice_notes.back();
       const std::string prefix = "step " + std::to_string(coarser) + ": ";
       if (why.rfind(prefix, 0) == 0) why = why.substr(prefix.size());
       result.lattice_notes.push_back(timed_out + "; step " + std::to_string(coarser) +

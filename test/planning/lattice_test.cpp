@@ -2,12 +2,13 @@
 // cells, connections put any start and target on a robot's lattice, a door as wide as a robot
 // stays open when a lattice line passes through it, the same input gives the same plan, and a
 // robot that needs no connection does not wait for another robot's.
+#include "fleet_planner/planning/lattice.h"
+
 #include <gtest/gtest.h>
 
 #include <iostream>
 
 #include "fleet_planner/model/plan_validator.h"
-#include "fleet_planner/planning/lattice.h"
 #include "fleet_planner/planning/plan_fleet.h"
 #include "fleet_planner/runtime/random.h"
 #include "test_maps.h"
@@ -29,7 +30,6 @@ PlanningOptions onLattice(int step) {
   o.time_limit = 20.0;
   return o;
 }
-
 
 /// A 72 x 48 map with a few pillars, and `n` robots of 4-7 cells at random free, non-overlapping
 /// grid poses (seeded).

@@ -26,8 +26,9 @@ PlanningOptions defaultLatticeWithoutTime() {
   return o;
 }
 
-
-bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+bool contains(const std::string& text, const std::string& part) {
+  return text.find(part) != std::string::npos;
+}
 
 Instance crossing() {
   Instance instance;
@@ -45,7 +46,8 @@ TEST(SecondLattice, AFleetThatTimesOutOnTheDefaultLatticeIsPlannedOnOneTwiceAsCo
   EXPECT_TRUE(contains(r.lattice_notes[0], "step 2: timed out")) << r.lattice_notes[0];
   EXPECT_TRUE(contains(r.lattice_notes[0], "planned on step 4")) << r.lattice_notes[0];
   ASSERT_NE(r.graphs, nullptr);
-  EXPECT_EQ(r.graphs->graph(0).actionModel().step, 4) << "the graphs of the plan's lattice, for re-planning";
+  EXPECT_EQ(r.graphs->graph(0).actionModel().step, 4)
+      << "the graphs of the plan's lattice, for re-planning";
 }
 
 TEST(SecondLattice, ALatticeTheCallerChoseGetsTheWholeCall) {
@@ -76,7 +78,8 @@ TEST(SecondLattice, WhenTheCoarserLatticeFailsTooTheFirstAnswerStands) {
   EXPECT_FALSE(r.reason.empty());
   ASSERT_EQ(r.lattice_notes.size(), 1u);
   EXPECT_TRUE(contains(r.lattice_notes[0], "step 2: timed out")) << r.lattice_notes[0];
-  EXPECT_TRUE(contains(r.lattice_notes[0], "step 4 tried in the rest of the time")) << r.lattice_notes[0];
+  EXPECT_TRUE(contains(r.lattice_notes[0], "step 4 tried in the rest of the time"))
+      << r.lattice_notes[0];
   EXPECT_TRUE(contains(r.lattice_notes[0], "'r'")) << r.lattice_notes[0];
   // With the default share the default lattice plans it.
   PlanningOptions o = defaultLatticeWithoutTime();

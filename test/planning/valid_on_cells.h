@@ -8,8 +8,10 @@
 
 namespace fleet_planner::test {
 
-inline ::testing::AssertionResult validOnCells(const GridMap& map, const Instance& instance, const PlanningResult& r) {
-  if (!r.success()) return ::testing::AssertionFailure() << statusName(r.status) << ": " << r.reason;
+inline ::testing::AssertionResult validOnCells(const GridMap& map, const Instance& instance,
+                                               const PlanningResult& r) {
+  if (!r.success())
+    return ::testing::AssertionFailure() << statusName(r.status) << ": " << r.reason;
   ActionModel model;
   model.step = r.lattice_step;
   const ValidationResult v = validatePlan(map, instance, r.plan, model);

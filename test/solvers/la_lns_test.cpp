@@ -422,28 +422,30 @@ TEST(LaLns, GivesUpWhenStuckOnlyIfTheCallerMayTrySomethingElse) {
   const World w(freeMap(n, 1), {dot("a", {0, 0, 0}, {n - 3, 0, 0}), dot("b", {n - 3, 0, 2}, {0, 0, 2})});
   std::map<int, long long> given_up_after;  // expansions, by knot_stall_repairs
   for (const int knot_stall : {3, 6})
-  for (const bool may_give_up : {true, false}) {
-    SCOPED_TRACE(std::to_string(knot_stall) + (may_give_up ? " may give up" : ""));
-    LaLnsOptions options;
-    options.joint_search_nodes = 0;
-    options.pair_proof_expansions = 0;
-    options.knot_stall_repairs = knot_stall;
-    LaLns solver(options);
-    Subproblem sub = allRobots(w, 60.0);
-    sub.max_expansions = 5'000'000;
-    if (may_give_up) sub.may_give_up = [] { return true; };
-    const Outcome o = solveWith(solver, w, sub);
-    EXPECT_EQ(o.result.status, SolveStatus::Timeout) << describe(o);
-    const std::string after = "stuck after " + std::to_string(knot_stall) + " repairs of every robot";
-    const bool stuck = o.result.reason.find(after) != std::string::npos;
-    EXPECT_EQ(stuck, may_give_up) << o.result.reason;
-    EXPECT_EQ(o.result.reason.find("expansion budget") != std::string::npos, !may_give_up) << o.result.reason;
-    if (may_give_up) {
-      EXPECT_LT(o.result.stats.low_level_expansions, sub.max_expansions / 3) << describe(o);
-      EXPECT_EQ(o.result.culprits, (std::vector<int>{0, 1}));
-      given_up_after[knot_stall] = o.result.stats.low_level_expansions;
+    for (const bool may_give_up : {true, false}) {
+      SCOPED_TRACE(std::to_string(knot_stall) + (may_give_up ? " may give up" : ""));
+      LaLnsOptions options;
+      options.joint_search_nodes = 0;
+      options.pair_proof_expansions = 0;
+      options.knot_stall_repairs = knot_stall;
+      LaLns solver(options);
+      Subproblem sub = allRobots(w, 60.0);
+      sub.max_expansions = 5'000'000;
+      if (may_give_up) sub.may_give_up = [] { return true; };
+      const Outcome o = solveWith(solver, w, sub);
+      EXPECT_EQ(o.result.status, SolveStatus::Timeout) << describe(o);
+      const std::string after =
+          "stuck after " + std::to_string(knot_stall) + " repairs of every robot";
+      const bool stuck = o.result.reason.find(after) != std::string::npos;
+      EXPECT_EQ(stuck, may_give_up) << o.result.reason;
+      EXPECT_EQ(o.result.reason.find("expansion budget") != std::string::npos, !may_give_up)
+          << o.result.reason;
+      if (may_give_up) {
+        EXPECT_LT(o.result.stats.low_level_expansions, sub.max_expansions / 3) << describe(o);
+        EXPECT_EQ(o.result.culprits, (std::vector<int>{0, 1}));
+        given_up_after[knot_stall] = o.result.stats.low_level_expansions;
+      }
     }
-  }
   EXPECT_LT(given_up_after[3], given_up_after[6]) << "fewer stalled repairs, sooner";
 }
 

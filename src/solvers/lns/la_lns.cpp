@@ -22,8 +22,8 @@ const bool kRegistered = registerSolver("la_lns", [] { return std::make_unique<L
 
 }  // namespace
 
-LnsSearch::LnsSearch(const SearchSpace& space, const Subproblem& problem, const LaLnsOptions& options,
-          SolveStats& stats)
+LnsSearch::LnsSearch(const SearchSpace& space, const Subproblem& problem,
+                     const LaLnsOptions& options, SolveStats& stats)
     : space_(space),
       problem_(problem),
       options_(options),
@@ -35,8 +35,8 @@ LnsSearch::LnsSearch(const SearchSpace& space, const Subproblem& problem, const 
       ideal_(n_),
       ideal_absent_(n_, false),
       escalation_(n_, 1),
-      growth_(options.neighborhood_size, n_ <= options.joint_robots ? options.knot_stall_repairs : options.stall_repairs,
-              n_) {
+      growth_(options.neighborhood_size,
+              n_ <= options.joint_robots ? options.knot_stall_repairs : options.stall_repairs, n_) {
   weights_.fill(1.0);
 }
 
@@ -80,7 +80,8 @@ SolveResult LnsSearch::run() {
     if (std::optional<SolveResult> stop = outOfBudget()) return *stop;
     if (growth_.exhausted() > 0 && mayGiveUp()) {
       return timeout("stuck after " +
-                     std::to_string(n_ <= options_.joint_robots ? options_.knot_stall_repairs : options_.stall_repairs) +
+                     std::to_string(n_ <= options_.joint_robots ? options_.knot_stall_repairs
+                                                                : options_.stall_repairs) +
                      " repairs of every robot without fewer colliding pairs");
     }
     repair();

@@ -23,8 +23,8 @@
 /// yet replanned at their starts, in a random order and in reverse (ordered_repair.h); where
 /// that fails, each of them in turn driving through while the others wait in pockets off its
 /// way or beside it (pocket_repair.h); then by LA-CBS (joint_repair.h); then, without moving
-/// obstacles, alone among the static obstacles by LA-LaCAM; and where that fails too, once the neighbourhood
-/// has grown to the whole subproblem, by a joint search (joint_path_search.h).
+/// obstacles, alone among the static obstacles by LA-LaCAM; and where that fails too, once the
+/// neighbourhood has grown to the whole subproblem, by a joint search (joint_path_search.h).
 ///
 /// A subproblem with returning robots (robots of other subproblems stepping aside) is first
 /// tried as a stage to clear (stage_clearing.h): the others planned without them, the returning
