@@ -20,6 +20,12 @@ namespace {
 
 const bool kRegistered = registerSolver("la_lns", [] { return std::make_unique<LaLns>(); });
 
+// Stalled repairs after which the neighbourhood grows (and, at every agent, the search may give
+// up): fewer for a knot, whose every repair is already the joint repair of all of it.
+int stallRepairs(const LaLnsOptions& o, int agents) {
+  return agents <= o.joint_robots ? o.knot_stall_repairs : o.stall_repairs;
+}
+
 }  // namespace
 
 LnsSearch::LnsSearch(const SearchSpace& space, const Subproblem& problem,
@@ -35,8 +41,7 @@ LnsSearch::LnsSearch(const SearchSpace& space, const Subproblem& problem,
       ideal_(n_),
       ideal_absent_(n_, false),
       escalation_(n_, 1),
-      growth_(options.neighborhood_size,
-              n_ <= options.joint_robots ? options.knot_stall_repairs : options.stall_repairs, n_) {
+      growth_(options.neighborhood_size, stallRepairs(options, n_), n_) {
   weights_.fill(1.0);
 }
 
@@ -79,9 +84,7 @@ SolveResult LnsSearch::run() {
     }
     if (std::optional<SolveResult> stop = outOfBudget()) return *stop;
     if (growth_.exhausted() > 0 && mayGiveUp()) {
-      return timeout("stuck after " +
-                     std::to_string(n_ <= options_.joint_robots ? options_.knot_stall_repairs
-                                                                : options_.stall_repairs) +
+      return timeout("stuck after " + std::to_string(stallRepairs(options_, n_)) +
                      " repairs of every robot without fewer colliding pairs");
     }
     repair();
