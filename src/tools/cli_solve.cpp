@@ -108,10 +108,8 @@ void addSolveCommand(CLI::App& app) {
          "--lattice-step", o->planning.lattice_step,
          "planning lattice: moves advance this many map cells (default 0: a third of the narrowest "
          "robot's width, at least 1; the benchmark pools plan at 1). A fleet that cannot be "
-         "planned on it "
-         "is planned on half the step; on the default, one that times out in two thirds of the "
-         "time is "
-         "planned on twice the step in the rest (lattice_notes says why)")
+         "planned on it is planned on half the step; on the default, one that times out in two "
+         "thirds of the time is planned on twice the step in the rest (lattice_notes says why)")
       ->check(CLI::NonNegativeNumber);
   cmd->add_flag("--no-compress", o->no_compress, "keep the merged plan's waits (no plan compression)");
   cmd->add_flag("--no-refine", o->no_refine, "keep the merged paths (no replanning of single robots)");
