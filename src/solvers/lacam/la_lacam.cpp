@@ -4,6 +4,7 @@
 #include <algorithm>
 
 #include "fleet_planner/solvers/lacam/la_pibt.h"
+#include "fleet_planner/solvers/lacam/paged_rows.h"
 #include "fleet_planner/solvers/registry.h"
 #include "fleet_planner/solvers/search/solve_common.h"
 
@@ -22,9 +23,9 @@ struct LowNode {
   int depth;
 };
 
-// A configuration's search node. Its configuration, agent order and priorities live in flat
-// arrays of the search (n entries per node), so that a search of millions of nodes is a handful
-// of allocations, freed at once when the deadline comes.
+// A configuration's search node. Its configuration, agent order and priorities live in paged
+// rows of the search (n entries per node), so that a search of millions of nodes is a few
+// allocations per thousand nodes, never copied, freed at once when the deadline comes.
 struct HighNode {
   int parent;
   std::vector<LowNode> tree;  // breadth-first: nodes before `head` have been tried
@@ -34,7 +35,14 @@ struct HighNode {
 class LacamSearch {
  public:
   LacamSearch(const SearchSpace& space, const Subproblem& problem, const LaLacamOptions& options)
-      : space_(space), problem_(problem), options_(options), n_(space.numAgents()), pibt_(space, problem.seed) {
+      : space_(space),
+        problem_(problem),
+        options_(options),
+        n_(space.numAgents()),
+        pibt_(space, problem.seed),
+        configs_(n_),
+        orders_(n_),
+        priorities_(n_) {
     table_.assign(1024, -1);
   }
 
@@ -83,8 +91,7 @@ class LacamSearch {
       const std::vector<LowNode>& tree = nodes_[id].tree;
       for (int c = low; tree[c].who >= 0; c = tree[c].parent) fixed.push_back({tree[c].who, tree[c].where});
       std::reverse(fixed.begin(), fixed.end());
-      order_.assign(orders_.begin() + static_cast<std::ptrdiff_t>(id) * n_,
-                    orders_.begin() + static_cast<std::ptrdiff_t>(id + 1) * n_);
+      order_.assign(orders_.row(id), orders_.row(id) + n_);
       if (!pibt_.generate(current, fixed, order_, next)) continue;
 
       const int known = find(next);
@@ -96,8 +103,7 @@ class LacamSearch {
         continue;
       }
       std::vector<float>& p = priority_;
-      p.assign(priorities_.begin() + static_cast<std::ptrdiff_t>(id) * n_,
-               priorities_.begin() + static_cast<std::ptrdiff_t>(id + 1) * n_);
+      p.assign(priorities_.row(id), priorities_.row(id) + n_);
       // PIBT's priorities: agents away from their target gain one per step; arrived ones drop back.
       for (int a = 0; a < n_; ++a) p[a] = next[a] == goal[a] ? p[a] - static_cast<float>(static_cast<int>(p[a])) : p[a] + 1;
       open.push_back(addNode(next, id, p));
@@ -110,7 +116,7 @@ class LacamSearch {
   double peakMemoryMb() const { return memoryMb(); }
 
  private:
-  const StateId* configOf(int id) const { return configs_.data() + static_cast<std::size_t>(id) * n_; }
+  const StateId* configOf(int id) const { return configs_.row(static_cast<std::size_t>(id)); }
 
   std::size_t hashOf(const StateId* c) const {
     std::size_t h = 1469598103934665603ULL;
@@ -153,8 +159,8 @@ class LacamSearch {
 
   int addNode(const Config& config, int parent, const std::vector<float>& priority) {
     const int id = static_cast<int>(nodes_.size());
-    configs_.insert(configs_.end(), config.begin(), config.end());
-    priorities_.insert(priorities_.end(), priority.begin(), priority.end());
+    std::copy(config.begin(), config.end(), configs_.append());
+    std::copy(priority.begin(), priority.end(), priorities_.append());
     // Agents by priority, highest first, ties by agent: sorted by insertion from the parent's
     // order, which the new priorities mostly keep.
     std::vector<int>& order = order_;
@@ -162,8 +168,7 @@ class LacamSearch {
       order.resize(n_);
       for (int a = 0; a < n_; ++a) order[a] = a;
     } else {
-      order.assign(orders_.begin() + static_cast<std::ptrdiff_t>(parent) * n_,
-                   orders_.begin() + static_cast<std::ptrdiff_t>(parent + 1) * n_);
+      order.assign(orders_.row(parent), orders_.row(parent) + n_);
     }
     auto before = [&](int x, int y) { return priority[x] != priority[y] ? priority[x] > priority[y] : x < y; };
     for (int i = 1; i < n_; ++i) {
@@ -172,7 +177,7 @@ class LacamSearch {
       for (; j > 0 && before(agent, order[j - 1]); --j) order[j] = order[j - 1];
       order[j] = agent;
     }
-    orders_.insert(orders_.end(), order.begin(), order.end());
+    std::copy(order.begin(), order.end(), orders_.append());
     nodes_.push_back(HighNode{parent, {LowNode{-1, -1, kNoState, 0}}, 0});
     ++live_low_;
     insert(id);
@@ -182,7 +187,7 @@ class LacamSearch {
 
   void expandLow(int id, int low, const Config& current) {
     const int depth = nodes_[id].tree[low].depth;
-    const int agent = orders_[static_cast<std::size_t>(id) * n_ + depth];
+    const int agent = orders_.row(id)[depth];
     StateChoices options = pibt_.candidates(agent, current[agent]);
     // Shuffle with the seed (Fisher-Yates) so that no direction is always tried first.
     for (int i = options.size(); i > 1; --i) {
@@ -199,12 +204,10 @@ class LacamSearch {
     node.head = 0;
   }
 
-  // Live search memory: flat arrays, nodes, the duplicate table, and the constraint trees
+  // Live search memory: paged rows, nodes, the duplicate table, and the constraint trees
   // (counted at twice their size for vector growth).
   double memoryMb() const {
-    const double flat = static_cast<double>(configs_.capacity()) * sizeof(StateId) +
-                        static_cast<double>(orders_.capacity()) * sizeof(int) +
-                        static_cast<double>(priorities_.capacity()) * sizeof(float);
+    const double flat = configs_.bytes() + orders_.bytes() + priorities_.bytes();
     const double nodes = static_cast<double>(nodes_.capacity()) * sizeof(HighNode) + table_.size() * sizeof(int);
     return (flat + nodes + 2.0 * static_cast<double>(live_low_) * sizeof(LowNode)) / 1048576.0;
   }
@@ -231,9 +234,9 @@ class LacamSearch {
   const int n_;
   LaPibt pibt_;
   std::vector<HighNode> nodes_;
-  std::vector<StateId> configs_;
-  std::vector<int> orders_;
-  std::vector<float> priorities_;
+  PagedRows<StateId> configs_;
+  PagedRows<int> orders_;
+  PagedRows<float> priorities_;
   std::vector<int> order_;        // scratch: an agent order
   std::vector<float> priority_;   // scratch: a node's priorities
   std::vector<int> table_;

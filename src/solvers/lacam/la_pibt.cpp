@@ -101,6 +101,7 @@ bool LaPibt::fits(int a, StateId from, Action action, std::vector<int>* in_way) 
     std::fill(seen_agent_.begin(), seen_agent_.end(), 0);
     agent_query_ = 1;
   }
+  const std::size_t first_in_way = in_way != nullptr ? in_way->size() : 0;
   bool clear = true;
   forEachMapCell((*ahead_[a])[p.heading][static_cast<int>(action)], {p.x, p.y}, width_, height_,
                  [&](std::size_t cell) {
@@ -114,7 +115,8 @@ bool LaPibt::fits(int a, StateId from, Action action, std::vector<int>* in_way) 
                    }
                    return true;
                  });
-  if (in_way != nullptr) std::sort(in_way->begin(), in_way->end());  // agent order, whatever the cells' order
+  // Agent order, whatever the cells' order.
+  if (in_way != nullptr) std::sort(in_way->begin() + static_cast<std::ptrdiff_t>(first_in_way), in_way->end());
   return clear;
 }
 
@@ -217,19 +219,25 @@ bool LaPibt::assign(int a, const Config& current, Config& next, int pusher, Stat
     const StateId s = options[i];
     const Action action = options.action(i);
     if (action == Action::Wait) return pusher < 0;  // waiting is the best it can do
-    std::vector<int> in_way;
-    if (fits(a, current[a], action, &in_way)) {
+    // The agents in a's way are appended to in_way_ after `mark`; pushes nested in this one
+    // append after them and take theirs off again before they return.
+    const std::size_t mark = in_way_.size();
+    if (fits(a, current[a], action, &in_way_)) {
+      in_way_.resize(mark);
       next[a] = s;
       const GridPose p = space_.graph(a).pose(current[a]);
       claim(a, space_.cells(a).swept(p.heading, action), p);
       return true;
     }
     // Blocked: if only agents still to move are in the way, ask them to clear, and wait.
-    if (in_way.empty()) continue;
+    const std::size_t end = in_way_.size();
+    if (end == mark) continue;
     bool cleared = true;
-    for (int b : in_way) {
+    for (std::size_t k = mark; k < end; ++k) {
+      const int b = in_way_[k];
       if (!assigned_[b]) cleared = assign(b, current, next, a, s) && cleared;
     }
+    in_way_.resize(mark);
     if (cleared) return pusher < 0;  // a waits; the way to s opens next step
   }
   return pusher < 0;

@@ -70,7 +70,7 @@ class LaPibt {
   void claimFootprints(const Config& current);
   // a doing `action` from `from` meets no agent's claim: the sweep of an assigned agent's
   // motion, the current footprint of the others. With `in_way`, the agents still to move that
-  // it meets, in agent order.
+  // it meets, in agent order, appended to it.
   bool fits(int a, StateId from, Action action, std::vector<int>* in_way = nullptr) const;
   // Assigns agent a (and, through pushes, agents blocking it). `avoid`: the state the pusher
   // wants next (kNoState: none), `pusher` its agent; a must end clear of the pusher's sweep to
@@ -127,6 +127,7 @@ class LaPibt {
   mutable std::vector<std::uint32_t> seen_;
   mutable std::uint32_t seen_query_ = 0;
   std::vector<bool> assigned_;  // assigned, or being assigned (then counted as waiting)
+  std::vector<int> in_way_;     // assign()'s agents in the way, a stack shared by nested pushes
   bool remember_escapes_;
 };
 
