@@ -60,7 +60,7 @@ void Solving::solveOne(std::size_t k) {
   // search is stuck rather than at the end of its share: the step aside gets the time.
   if (!order_[k].step_aside_tried && order_.size() > 1 && sub.robots.size() > 1)
     sub.may_give_up = [this, k] { return !standingInTheWay(k).empty(); };
-  // A time share: at least a quarter of what is left, more for a larger part of the robots
+  // A time share: at least half of what is left, more for a larger part of the robots
   // still to be solved in this round (those of subproblems solved or being solved included);
   // the last subproblem gets all of it. A share that runs out triggers the safeguard.
   const double share = k + 1 == order_.size()

@@ -6,6 +6,7 @@
 
 #include "fleet_planner/model/plan_validator.h"
 #include "fleet_planner/layered/subproblem_solving.h"
+#include "fleet_planner/layered/time_budget.h"
 #include "fleet_planner/solvers/registry.h"
 #include "test_maps.h"
 #include "test_robots.h"
@@ -65,7 +66,9 @@ TEST(TimeShare, ALateSubproblemSharesOnlyWithTheRobotsStillToSolve) {
   ASSERT_EQ(solved.status, SolveStatus::Success) << solved.reason;
   EXPECT_TRUE(validatePlan(map, in, Plan{solved.paths}).valid());
   ASSERT_EQ(given.size(), 8u);
-  EXPECT_LT(given[0], 0.3 * seconds) << "a one-robot subproblem among ten robots";
+  const double minimum = TimeBudget{}.min_subproblem_share;
+  ASSERT_LT(minimum, 0.6) << "the three-robot subproblem's check below needs a share above the minimum";
+  EXPECT_LT(given[0], (minimum + 0.05) * seconds) << "a one-robot subproblem among ten robots: the minimum";
   EXPECT_GT(given[6], 0.6 * seconds) << "three robots of the four left";
   EXPECT_GT(given[9], 0.9 * seconds) << "the last subproblem gets all that is left";
 }

@@ -17,8 +17,9 @@ struct TimeBudget {
   /// seconds, at most half of the time left.
   double validation_reserve_s = 1.0;
   /// A subproblem's share of the time left: its part of the robots still to solve in the round,
-  /// at least this much (the last subproblem gets all of it).
-  double min_subproblem_share = 0.25;
+  /// at least this much (the last subproblem gets all of it). Half: a hard level of a large
+  /// fleet needs a good part of the call, and a failed one still leaves the safeguard half.
+  double min_subproblem_share = 0.5;
   /// Part of a subproblem's share left to the fallback backend, when there is one.
   double fallback_share = 0.5;
   /// Pair proofs (infeasible_pairs.h): the share of the time left that the entangled pairs may
