@@ -12,7 +12,7 @@ TEST(PagedRows, RowsKeepTheirContentsAndAddressesAcrossManyPages) {
   const int width = 37;  // not a power of two: rows straddle no page, pages end short
   PagedRows<int> rows(width);
   std::vector<const int*> addresses;
-  const int count = 20000;  // about 45 pages of 64 KB
+  const int count = 20000;  // 256 rows of 148 bytes a page: 79 pages
   for (int r = 0; r < count; ++r) {
     int* row = rows.append();
     for (int i = 0; i < width; ++i) row[i] = r * 1000 + i;
