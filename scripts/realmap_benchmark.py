@@ -4,13 +4,15 @@ lattice and with lattice step 1 on the same instances.
 
 Usage: scripts/realmap_benchmark.py [--realmaps DIR] [--counts 10 30 50] [--seeds 1 2 3]
                                     [--time-limit 60] [--out results.csv] [--cli PATH]
+                                    [--flags SOLVE_FLAGS...]
 
 For every map (DIR/*.yaml, default ../shared/realmaps), count and seed: a scenario of that many
 robots of DIR/real_robots.yaml at random free poses and random yaw (scripts/realmap_scenario.py),
 solved by `fleet_planner_cli solve` with its defaults (the node's) and again with --lattice-step 1.
 A run is answered when it is SUCCESS with a valid plan or INFEASIBLE with a reason. soc_cells is
-the sum of costs in the time of a one-cell move (SOC x lattice step): it compares plans made on
-different lattices. Prints one line per run, then a summary per map and count (answered, median
+the sum of costs in the time of a one-cell move (SOC x plan step: plans come on steps of one
+cell unless --lattice-timing; SOC x lattice step for a plan on the lattice's steps): it compares
+plans made on different lattices. Prints one line per run, then a summary per map and count (answered, median
 time, and where both solve: median speed-up and SOC ratio), and writes every run to --out (CSV).
 """
 import argparse
@@ -26,7 +28,7 @@ import time
 HERE = os.path.dirname(os.path.abspath(__file__))
 REPO = os.path.normpath(os.path.join(HERE, ".."))
 COLUMNS = ["map", "robots", "seed", "config", "status", "valid", "lattice_step", "backward", "time_s", "soc", "soc_cells",
-           "makespan", "lattice_notes", "reason"]
+           "makespan", "lattice_notes", "reason", "plan_step"]
 
 
 def solve(cli, scenario, extra, time_limit):
@@ -40,10 +42,11 @@ def solve(cli, scenario, extra, time_limit):
     except (ValueError, IndexError):
         return {"status": "ERROR", "reason": (run.stderr or run.stdout).strip()[:300], "time_s": wall}
     soc = j.get("soc")
+    plan_step = j.get("plan_step", j.get("lattice_step", 1))  # the CLI before plan_step: the lattice's
     return {"status": j["status"], "valid": j.get("valid"), "lattice_step": j.get("lattice_step"),
             "backward": j.get("backward"),
             "time_s": j.get("time_s", wall), "soc": soc, "makespan": j.get("makespan"),
-            "soc_cells": soc * j.get("lattice_step", 1) if soc is not None else None,
+            "soc_cells": soc * plan_step if soc is not None else None, "plan_step": plan_step,
             "lattice_notes": " | ".join(j.get("lattice_notes", []))[:300], "reason": (j.get("reason") or "")[:300]}
 
 
@@ -59,6 +62,8 @@ def main(argv=None):
     p.add_argument("--time-limit", type=float, default=60.0)
     p.add_argument("--threads", type=int, default=2)
     p.add_argument("--out", default="realmap_benchmark.csv")
+    p.add_argument("--flags", nargs=argparse.REMAINDER, default=[],
+                   help="further flags of `solve` for both configurations (last on the line), e.g. --flags --lattice-timing")
     p.add_argument("--cli", default=os.path.join(REPO, "build", "devel", "lib", "fleet_planner", "fleet_planner_cli"))
     args = p.parse_args(argv)
     fleet = os.path.join(args.realmaps, "real_robots.yaml")
@@ -79,7 +84,8 @@ def main(argv=None):
                         print("%s %d robots seed %d: no scenario: %s" % (name, count, seed, made.stdout.strip()))
                         continue
                     for config, extra in (("default", []), ("step1", ["--lattice-step", "1"])):
-                        row = solve(args.cli, scenario, extra + ["--threads", str(args.threads)], args.time_limit)
+                        row = solve(args.cli, scenario, extra + ["--threads", str(args.threads)] + args.flags,
+                                    args.time_limit)
                         row.update(map=name[:-5], robots=count, seed=seed, config=config)
                         rows.append(row)
                         writer.writerow(row)

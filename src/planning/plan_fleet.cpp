@@ -8,6 +8,7 @@
 #include "fleet_planner/execution/earliest_schedule.h"
 #include "fleet_planner/model/plan_validator.h"
 #include "fleet_planner/model/robot_cells.h"
+#include "fleet_planner/planning/cell_steps.h"
 #include "fleet_planner/planning/lattice.h"
 #include "fleet_planner/runtime/errors.h"
 #include "fleet_planner/runtime/memory_guard.h"
@@ -144,22 +145,50 @@ class LatticeAttempt {
     std::optional<Plan> full = assembleLatticePlan(instance_, *lattice, graphs, result_.plan, problem);
     if (!full) return step > 1 ? giveUp(step, problem) : finalFailure(SolveStatus::Infeasible, problem);
     result_.plan = std::move(*full);
-    if (options_.compress && !deadline_.expired()) {
+    const bool on_cells = options_.cell_steps && step > 1;
+    if (options_.compress && !on_cells && !deadline_.expired()) {
       // The connections were placed one robot after another, each start padded to the longest:
-      // retimed as a whole, robots leave as soon as the others allow.
+      // retimed as a whole, robots leave as soon as the others allow (on cell steps, there).
       const auto t_retime = std::chrono::steady_clock::now();
       result_.compression.waits_removed +=
           retimeToEarliest(instance_, result_.plan, graphs.graph(0).actionModel());
       result_.compression.time_s += since(t_retime);
     }
-    const ValidationResult check = validatePlan(map_, instance_, result_.plan, graphs.graph(0).actionModel());
-    if (!check.valid()) {
-      result_.status = SolveStatus::InternalError;
-      result_.reason = "internal error: the plan with its lattice connections fails validation: " +
-                       check.violation.message;
-      return true;
+    result_.plan_step = step;
+    // On cell steps the validator checks the plan returned; on the lattice's steps, this one.
+    if (!(on_cells && !deadline_.expired() && timeOnCells(graphs.graph(0).actionModel()))) {
+      const ValidationResult check = validatePlan(map_, instance_, result_.plan, graphs.graph(0).actionModel());
+      if (!check.valid()) {
+        result_.status = SolveStatus::InternalError;
+        result_.reason = "internal error: the plan with its lattice connections fails validation: " +
+                         check.violation.message;
+        return true;
+      }
     }
     result_.metrics = planMetrics(result_.plan, planTargets(instance_, result_.plan));
+    return true;
+  }
+
+  // Puts the plan on steps of one cell (cell_steps.h), retimed so that the waits and turns the
+  // lattice stretched to a move's time take their own, if the validator accepts it that way.
+  // False (a note said, the plan left on the lattice's steps) if it does not, which is never
+  // expected.
+  bool timeOnCells(const ActionModel& lattice_model) {
+    const auto t = std::chrono::steady_clock::now();
+    Plan fine = onCellSteps(result_.plan, lattice_model);
+    ActionModel cell_model = lattice_model;
+    cell_model.step = 1;
+    if (options_.compress) result_.cell_steps_saved = retimeToEarliest(instance_, fine, cell_model);
+    const ValidationResult check = validatePlan(map_, instance_, fine, cell_model);
+    result_.cell_steps_s = since(t);
+    if (!check.valid()) {
+      result_.cell_steps_saved = 0;
+      result_.lattice_notes.push_back("internal error: the plan on cell steps fails validation (" +
+                                      check.violation.message + "); returned on the lattice's steps");
+      return false;
+    }
+    result_.plan = std::move(fine);
+    result_.plan_step = 1;
     return true;
   }
 

@@ -70,6 +70,7 @@ PlanningOptions planningOptions(const PlannerConfig& c) {
   o.threads = c.threads;
   o.refine = c.refine;
   o.compress = c.compress;
+  o.cell_steps = c.cell_steps;
   o.time_limit = c.time_limit;
   o.limits = c.resourceLimits();
   return o;

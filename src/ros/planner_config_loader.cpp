@@ -79,6 +79,7 @@ const std::vector<std::string>& plannerParameterNames() {
   static const std::vector<std::string> names = {
       "backend",           "time_limit",         "max_time_limit",  "decomposition",     "decomposition_steps",
       "threads",           "fallback",           "backend_parameters", "lattice_resolution", "allow_backward", "refine", "compress",
+      "cell_steps",
       "busy_policy",       "max_map_cells",      "max_robots",      "max_memory_mb",     "occupied_threshold",
       "unknown_policy",    "position_tolerance", "heading_tolerance", "sweep_tolerance", "seconds_per_step",
       "map_frame",         "base_frame",         "tf_timeout",      "playback",          "planned_frame",
@@ -113,6 +114,7 @@ PlannerConfig loadPlannerConfig(const ros::NodeHandle& nh) {
   r.read("threads", c.threads);
   r.read("refine", c.refine);
   r.read("compress", c.compress);
+  r.read("cell_steps", c.cell_steps);
   r.read("fallback", c.fallback);
   r.read("backend_parameters", c.backend_parameters);
   r.read("lattice_resolution", c.lattice_resolution);

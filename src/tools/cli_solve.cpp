@@ -46,6 +46,7 @@ nlohmann::json resultJson(const PlanningResult& result, const std::string& mode,
           {"seed", seed},
           {"threads", result.threads},
           {"lattice_step", result.lattice_step},
+          {"plan_step", result.plan_step},
           {"lattice_notes", result.lattice_notes},
           {"precompute_s", result.precompute_s},
           {"decompose_s", result.decompose_s},
@@ -67,7 +68,9 @@ nlohmann::json resultJson(const PlanningResult& result, const std::string& mode,
           {"refine_group_searches", result.refinement.group_searches},
           {"refine_soc_saved", result.refinement.soc_saved},
           {"compress_s", result.compression.time_s},
-          {"waits_removed", result.compression.waits_removed}};
+          {"waits_removed", result.compression.waits_removed},
+          {"cell_steps_s", result.cell_steps_s},
+          {"cell_steps_saved", result.cell_steps_saved}};
 }
 
 }  // namespace
@@ -82,6 +85,7 @@ void addSolveCommand(CLI::App& app) {
     std::string out;
     bool details = false;
     bool no_compress = false;
+    bool lattice_timing = false;
     bool no_refine = false;
     bool one_chain = false;
     bool backward = false;
@@ -112,6 +116,9 @@ void addSolveCommand(CLI::App& app) {
          "thirds of the time is planned on twice the step in the rest (lattice_notes says why)")
       ->check(CLI::NonNegativeNumber);
   cmd->add_flag("--no-compress", o->no_compress, "keep the merged plan's waits (no plan compression)");
+  cmd->add_flag("--lattice-timing", o->lattice_timing,
+                "return a plan made on a lattice step above 1 on the lattice's steps (a move of up to that many "
+                "cells a step) instead of steps of one cell");
   cmd->add_flag("--no-refine", o->no_refine, "keep the merged paths (no replanning of single robots)");
   cmd->add_flag("--one-chain", o->one_chain,
                 "serial backends: plan every level around all earlier paths (no independent clusters)");
@@ -130,6 +137,7 @@ void addSolveCommand(CLI::App& app) {
     options.decompose = o->mode == "layered";
     options.last_step = static_cast<int>(o->steps.size());
     options.compress = !o->no_compress;
+    options.cell_steps = !o->lattice_timing;
     options.refine = !o->no_refine;
     options.independent_clusters = !o->one_chain;
     options.limits = o->problem.limits;
@@ -154,7 +162,7 @@ void addSolveCommand(CLI::App& app) {
     // The CLI's own check of the returned plan, outside the timing: true only for a plan that the
     // independent validator accepts (the planner validates too; this records it per run).
     ActionModel model = options.model;
-    model.step = result.lattice_step;
+    model.step = result.plan_step;
     j["valid"] = result.success() && validatePlan(p.map, p.instance, result.plan, model).valid();
     printJsonLine(j);
     if (result.status == SolveStatus::InternalError) setExitCode(kExitInternalError);

@@ -92,7 +92,9 @@ TEST(ExecutionMonitorLag, NobodyIsReleasedOntoARobotThatCountsAsGoneButIsNotQuit
   for (const auto& [x, y] : std::vector<std::pair<int, int>>{{8, 8}, {8, 9}, {15, 1}}) {
     for (int k = 0; k < 25; ++k) blocked.push_back({5 * x + k % 5, 5 * y + k / 5});
   }
-  FleetPlanningService service{PlannerConfig{}};
+  PlannerConfig config;
+  config.cell_steps = false;  // states a lattice step apart, the tolerance in proportion
+  FleetPlanningService service{config};
   service.setMap(occupancyGrid(120, 60, kFine, kOx, kOy, blocked));
   service.setFootprints(registry());
   const PlanCall call = service.plan(swapRequest(), nullptr);

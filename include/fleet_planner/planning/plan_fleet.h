@@ -36,6 +36,11 @@ struct PlanningResult : LayeredResult {
   int threads = 1;       ///< as used
   bool layered = true;   ///< as used: decomposed (false: raw)
   int lattice_step = 1;  ///< the lattice the plan was made on (cells)
+  /// Cells a move of the returned plan advances at most: 1 when it is on cell steps
+  /// (PlanningOptions::cell_steps, cell_steps.h), else lattice_step. SOC and makespan count its steps.
+  int plan_step = 1;
+  long long cell_steps_saved = 0;  ///< steps the retiming on cell steps took off the paths
+  double cell_steps_s = 0.0;       ///< putting the plan on cell steps, retiming and checking it
   /// Why each lattice tried before the one used was given up ("step 4: robot 'a' cannot reach
   /// ..."), or, after a time-out on the default lattice, what the lattice twice as coarse did.
   std::vector<std::string> lattice_notes;

@@ -37,6 +37,10 @@ struct PlanningOptions {
   bool independent_clusters = true;
   bool refine = true;    ///< replan robots one at a time around the others after merging
   bool compress = true;  ///< drop every wait that no conflict needs
+  /// A plan made on a lattice of step s > 1 is returned on steps of one cell (cell_steps.h): s
+  /// steps for each lattice move, so a step lasts the same whatever the lattice, retimed with
+  /// `compress`. false: returned on the lattice's steps (a move of s cells in one step).
+  bool cell_steps = true;
   std::uint64_t seed = 0;
   /// Seconds for the whole call, state graphs included, counted from PlanningCall::started.
   double time_limit = 10.0;

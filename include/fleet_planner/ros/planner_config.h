@@ -36,6 +36,7 @@ struct PlannerConfig {
   BackendParameters backend_parameters;
   bool refine = true;                ///< replan delayed robots after merging (plan_refinement.h)
   bool compress = true;              ///< drop the waits no conflict needs (plan_compression.h)
+  bool cell_steps = true;            ///< a lattice plan on steps of one cell (cell_steps.h)
   std::string busy_policy = "reject";  ///< a call while another plans: "reject" (BUSY) or "queue"
 
   // Resource limits (core/resource_limits.h): beyond them a call answers RESOURCE_LIMIT.
