@@ -188,8 +188,28 @@ void saveScenario(const Instance& instance, const std::string& path) {
   io::writeTextFile(path, scenarioToYaml(instance, instance.map_file));
 }
 
+namespace {
+
+// A scenario whatever the file is called (`generate --out fleet.scen` writes one): its first
+// non-blank line is a YAML comment, a document start or a top-level key, where a line of a
+// benchmark pool starts with a robot kind ("Circle", "Block_2D").
+bool looksLikeScenario(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::string line;
+  while (std::getline(in, line)) {
+    const std::size_t first = line.find_first_not_of(" \t\r");
+    if (first == std::string::npos) continue;
+    const std::string head = line.substr(first);
+    return head[0] == '#' || head[0] == '{' || head.rfind("---", 0) == 0 || head.rfind("map:", 0) == 0 ||
+           head.rfind("robots:", 0) == 0;
+  }
+  return false;
+}
+
+}  // namespace
+
 Instance loadInstance(const std::string& path) {
-  if (io::hasYamlExtension(path)) return loadScenario(path);
+  if (io::hasYamlExtension(path) || looksLikeScenario(path)) return loadScenario(path);
   return loadBenchmarkInstance(path);
 }
 

@@ -348,6 +348,21 @@ TEST(InstanceIo, LoadInstanceDispatchesOnTheExtension) {
   EXPECT_EQ(loadInstance(yml).robots[0].id, "z");
 }
 
+TEST(InstanceIo, LoadInstanceReadsAScenarioWhateverItsName) {
+  // What `generate --out fleet.scen` writes: a scenario under a pool's kind of name.
+  Instance made = loadInstance(dataPath("scenario_three_footprints.yaml"));
+  const std::string scen = scratchFile("fleet.scen", scenarioToYaml(made, "grid.map"));
+  EXPECT_EQ(loadInstance(scen).robots[2].id, "r3");
+  const std::string bare = scratchFile("bare.txt",
+                                       "\n  robots: [{id: q, footprint: {type: circle, radius: 1}, start: [0, 0, 0], "
+                                       "target: [0, 0, 0]}]\n");
+  EXPECT_EQ(loadInstance(bare).robots[0].id, "q");
+  // A pool stays a pool, and a bad pool line is still named as one.
+  EXPECT_EQ(loadInstance(dataPath("instance_with_ids.txt")).robots[2].id, "a");
+  const std::string bad = scratchFile("bad.txt", "Square 0 1 2 3 0 4 5 0\n");
+  EXPECT_THROW(loadInstance(bad), ParseError);
+}
+
 TEST(SharedBenchmarkIo, EveryMapAndPoolLoadsWithTheReadmeSizes) {
   const std::string root = std::string(FLEET_PLANNER_TEST_DATA) + "/../../../shared/benchmark";
   if (!std::filesystem::exists(root + "/README.md")) GTEST_SKIP() << "no " << root;
