@@ -142,6 +142,42 @@ TEST(JointPathSearch, AgentsOutsideTheGroupAreSoft) {
   EXPECT_EQ(hard.outcome, JointSearchResult::Outcome::NoPath);
 }
 
+// A search that starts later, from given states (JointSearchOptions::from): its paths begin at
+// those states at that step, and joined to the members' ways there the plan is valid. In a
+// static world, from the starts at any step it costs what the search from step 0 does.
+TEST(JointPathSearch, StartsLaterFromTheStatesGiven) {
+  const World w(mapFromRows({".......", "@@@.@@@"}),
+                {dot("a", {0, 0, 0}, {6, 0, 0}), dot("b", {6, 0, 1}, {0, 0, 1})});
+  const Subproblem sub = allRobots(w);
+  const SearchSpace space(sub);
+  const SoftPathTable empty(space);
+  const JointSearchResult first = jointPathSearch(space, {0, 1}, empty, sub.deadline);
+  ASSERT_EQ(first.outcome, JointSearchResult::Outcome::Found);
+  JointSearchOptions later;
+  later.from = {space.start(0), space.start(1)};
+  later.from_step = 7;
+  const JointSearchResult same = jointPathSearch(space, {0, 1}, empty, sub.deadline, later);
+  ASSERT_EQ(same.outcome, JointSearchResult::Outcome::Found);
+  EXPECT_EQ(same.paths, first.paths);
+  // a has driven two cells by step 2, b has waited at its start.
+  const StateGraph& g = space.graph(0);
+  const StatePath a_way = {g.id({0, 0, 0}), g.id({1, 0, 0}), g.id({2, 0, 0})};
+  later.from = {a_way.back(), space.start(1)};
+  later.from_step = 2;
+  const JointSearchResult on = jointPathSearch(space, {0, 1}, empty, sub.deadline, later);
+  ASSERT_EQ(on.outcome, JointSearchResult::Outcome::Found);
+  ASSERT_EQ(on.paths[0].front(), a_way.back());
+  ASSERT_EQ(on.paths[1].front(), space.start(1));
+  JointSearchResult joined = on;
+  joined.paths[0].insert(joined.paths[0].begin(), a_way.begin(), a_way.end() - 1);
+  joined.paths[1].insert(joined.paths[1].begin(), 2, space.start(1));
+  long long soc = -1;
+  EXPECT_TRUE(validJointPlan(w, sub, joined, soc));
+  EXPECT_GE(soc, 2);
+  later.from = {space.start(0)};
+  EXPECT_THROW(jointPathSearch(space, {0, 1}, empty, sub.deadline, later), InvalidInput);
+}
+
 TEST(JointPathSearch, RejectsGroupsLargerThanItsLimit) {
   const World w(freeMap(6, 2), {dot("a", {0, 0, 0}, {5, 0, 0}), dot("b", {1, 0, 0}, {4, 0, 0}),
                                 dot("c", {0, 1, 0}, {5, 1, 0}), dot("d", {1, 1, 0}, {4, 1, 0})});

@@ -361,26 +361,6 @@ TEST(LaLns, UntiesThreeRobotKnot) {
   ASSERT_TRUE(solvedValidly(o));
 }
 
-// Robots 135 and 227 of `generate --feasible --seed 2` with 300 robots on Berlin_1_256 (read
-// from ../shared when it is there), alone: their targets touch, so the one that arrives first
-// must not close the other's way in. Replanned one by one (the other neighbourhoods, which for
-// two robots hold both), each repair cost about 900,000 expansions, and with solver seeds 0
-// and 3 the joint repair's turn came after 6 and 11 repairs (5.6 and 8.8 million expansions);
-// taken at once, its LA-LaCAM plan of the pair is the first repair (about 1.3 million).
-TEST(LaLns, TakesTheJointRepairAtOnceForTwoRobots) {
-  const std::optional<GridMap> berlin = sharedBenchmarkMap("Berlin_1_256");
-  if (!berlin) GTEST_SKIP() << "no ../shared/benchmark";
-  const World w(*berlin,
-                {makeRobot("135", Footprint::block(-0.2, -1.6, 1.8, 1.6), {155, 182, 1}, {27, 29, 3}),
-                 makeRobot("227", Footprint::block(-0.4, -0.5, 1.1, 0.5), {69, 199, 2}, {28, 30, 2})});
-  for (const std::uint64_t seed : {0, 3}) {
-    Subproblem sub = allRobots(w, 60.0, seed);
-    sub.max_expansions = 2'500'000;
-    const Outcome o = solveWith("la_lns", w, sub);
-    EXPECT_TRUE(solvedValidly(o)) << "seed " << seed << ": " << describe(o);
-  }
-}
-
 // Two robots that cannot pass each other: the joint step proves it and names them, at once.
 TEST(LaLns, ProvesAnImpossibleSwapAndNamesBothRobots) {
   const World w(freeMap(6, 1), {dot("a", {0, 0, 0}, {5, 0, 0}), dot("b", {5, 0, 1}, {0, 0, 1})});

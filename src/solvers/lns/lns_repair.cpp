@@ -73,7 +73,41 @@ bool LnsSearch::planTogether(const std::vector<int>& group) {
              "(their joint search ran out of states)";
     return false;
   }
+  if (r.outcome == JointSearchResult::Outcome::NodeLimit && planTogetherLater(group, o)) return true;
   provePair(group);
+  return false;
+}
+
+bool LnsSearch::planTogetherLater(const std::vector<int>& group, JointSearchOptions options) {
+  std::vector<StatePath> before(n_);
+  for (int a : group) before[a] = joint_before_[a];
+  const std::optional<AgentConflict> met = firstConflict(space_, before);
+  if (!met) return false;
+  const int n = static_cast<int>(group.size());
+  // Leads of a few dozen steps: enough to make way for each other, few enough to search. At
+  // each, the members where their paths have them then, and then each member instead held at
+  // its start until then: a robot that drove into a place it cannot leave (a target at a wall
+  // it cannot turn at) must wait for the other where it stood.
+  for (const int lead : {kLaterLead, 4 * kLaterLead}) {
+    const int t0 = met->t - lead;
+    if (t0 <= 0) return false;
+    for (int held = -1; held < n; ++held) {
+      options.from.clear();
+      for (int k = 0; k < n; ++k) options.from.push_back(stateAt(before[group[k]], k == held ? 0 : t0));
+      options.from_step = t0;
+      const JointSearchResult r = jointPathSearch(space_, group, table_, problem_.deadline, options);
+      stats_.low_level_expansions += r.expansions;
+      if (r.outcome == JointSearchResult::Outcome::Expired) return false;
+      if (r.outcome != JointSearchResult::Outcome::Found) continue;
+      for (int k = 0; k < n; ++k) {
+        StatePath path;
+        for (int t = 0; t < t0; ++t) path.push_back(stateAt(before[group[k]], k == held ? 0 : t));
+        path.insert(path.end(), r.paths[k].begin(), r.paths[k].end());
+        table_.insert(group[k], path);
+      }
+      return true;
+    }
+  }
   return false;
 }
 
@@ -218,6 +252,10 @@ void LnsSearch::repair() {
   for (std::size_t i = 0; i < group.size(); ++i) {
     old[i] = table_.path(group[i]);
     table_.remove(group[i]);
+  }
+  if (method == kJoint) {
+    joint_before_.assign(n_, StatePath{});
+    for (std::size_t i = 0; i < group.size(); ++i) joint_before_[group[i]] = old[i];
   }
   shuffle(group);
   const bool planned = method == kJoint ? planTogether(group) : planOneByOne(group);

@@ -17,6 +17,7 @@
 #include "fleet_planner/runtime/random.h"
 #include "fleet_planner/solvers/lns/la_lns.h"
 #include "fleet_planner/solvers/lns/neighborhood_growth.h"
+#include "fleet_planner/solvers/search/joint_path_search.h"
 #include "fleet_planner/solvers/search/search_space.h"
 #include "fleet_planner/solvers/search/soft_path_search.h"
 #include "fleet_planner/solvers/search/soft_path_table.h"
@@ -24,6 +25,9 @@
 namespace fleet_planner {
 
 /// How a repair chooses its neighbourhood (adaptive LNS: each method's weight grows with its help).
+// planTogetherLater's first lead: steps before the group's members first meet.
+constexpr int kLaterLead = 32;
+
 enum Method { kCollisionGraph = 0, kIdealPath = 1, kRandom = 2, kJoint = 3, kMethods = 4 };
 
 class LnsSearch {
@@ -96,6 +100,14 @@ class LnsSearch {
   // level of maze-128-128-10 K=40, which it otherwise solves in that time.
   bool planTogether(const std::vector<int>& group);
 
+  // The group's joint search started later (JointSearchOptions::from): its members keep their
+  // paths of before the repair (joint_before_) until a lead of steps before the first step two
+  // of them meet, and search jointly from there; their paths put in the table if it finds one.
+  // A knot far from the starts (a robot that must make way for one that arrives hundreds of
+  // steps later) is then a search of a few dozen steps, where the search from step 0 spends its
+  // states on the way there.
+  bool planTogetherLater(const std::vector<int>& group, JointSearchOptions options);
+
   // The group alone among the static obstacles by LA-LaCAM, its paths put in the table (soft
   // towards the others); false if it found none or the subproblem has moving obstacles.
   bool planAlone(const std::vector<int>& group, double seconds);
@@ -136,6 +148,7 @@ class LnsSearch {
   Rng rng_;
   std::vector<std::vector<int>> partners_;  // sorted; symmetric: the collision graph
   std::vector<StatePath> ideal_;
+  std::vector<StatePath> joint_before_;  // a joint repair's group: their paths before it (by agent)
   bool parked_partly_ = false;  // the first plan began with a parking plan that left robots
   std::vector<bool> ideal_absent_;  // the search proved there is no such path
   std::vector<int> escalation_;     // per agent: factor of the collision cost

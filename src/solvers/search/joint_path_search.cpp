@@ -62,13 +62,17 @@ JointSearchResult jointPathSearch(const SearchSpace& space, const std::vector<in
   if (n < 1 || n > kMaxJointGroup)
     throw InvalidInput("joint path search: a group of " + std::to_string(n) + " agents (1 to " +
                        std::to_string(kMaxJointGroup) + " allowed)");
+  if (!options.from.empty() && static_cast<int>(options.from.size()) != n)
+    throw InvalidInput("joint path search: " + std::to_string(options.from.size()) + " states to start from for " +
+                       std::to_string(n) + " agents");
+  const int t0 = std::max(0, options.from_step);
   JointSearchResult result;
   const ReservationTable& reservations = space.reservations();
   std::array<int, kMaxJointGroup> goal_earliest{};
   Joint start{}, target{};
   for (int i = 0; i < n; ++i) {
     const int a = group[i];
-    start[i] = space.start(a);
+    start[i] = options.from.empty() ? space.start(a) : options.from[i];
     target[i] = space.target(a);
     if (space.distance(a, start[i]) < 0) return result;
     const GridPose p = space.graph(a).pose(target[i]);
@@ -97,7 +101,7 @@ JointSearchResult jointPathSearch(const SearchSpace& space, const std::vector<in
     nodes.push_back(node);
     open.push(static_cast<int>(nodes.size()) - 1);
   };
-  push({start, 0, 0, 0, 0, 0, 0u, -1});
+  push({start, std::min(t0, static_from), t0, 0, 0, 0, 0u, -1});
 
   std::vector<int> met;
   std::array<std::vector<Move>, kMaxJointGroup> moves;
@@ -124,7 +128,7 @@ JointSearchResult jointPathSearch(const SearchSpace& space, const std::vector<in
         // Member i's states until it committed to its target (commits take no time).
         StatePath& path = result.paths.emplace_back();
         for (int j : chain) {
-          if (nodes[j].steps == static_cast<int>(path.size())) path.push_back(nodes[j].s[i]);
+          if (nodes[j].steps - t0 == static_cast<int>(path.size())) path.push_back(nodes[j].s[i]);
           if (nodes[j].done >> i & 1u) break;
         }
       }

@@ -28,13 +28,18 @@ struct JointSearchOptions {
   /// of them (n robots), so this bounds time and memory alike: on maze-128-128-10, 500,000
   /// took 0.35-0.4 s for three robots and 0.5-0.9 s for two (longer paths, more expansions).
   long long max_nodes = 50'000;
+  /// A search that starts later: the members at these states (the group's order) at step
+  /// `from_step`, their paths before it being the caller's (and the answer's paths holding the
+  /// states from from_step on). Empty: at their starts at step 0.
+  std::vector<StateId> from;
+  int from_step = 0;
 };
 
 struct JointSearchResult {
   enum class Outcome { Found, NoPath, Expired, NodeLimit };
   Outcome outcome = Outcome::NoPath;
-  /// One path per member (the group's order): states at t = 0, 1, ..., ending at the target,
-  /// held from then on.
+  /// One path per member (the group's order): states at t = from_step, from_step + 1, ...
+  /// (JointSearchOptions), ending at the target, held from then on.
   std::vector<StatePath> paths;
   int collisions = 0;  ///< colliding steps with agents outside the group, plus those met holding
   long long expansions = 0;
