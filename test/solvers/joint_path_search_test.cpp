@@ -178,6 +178,33 @@ TEST(JointPathSearch, StartsLaterFromTheStatesGiven) {
   EXPECT_THROW(jointPathSearch(space, {0, 1}, empty, sub.deadline, later), InvalidInput);
 }
 
+// Joint states that differ only in a step after JointSearchOptions::static_from are one: a
+// robot turning to and fro for 2,000 steps in a room of its own keeps the world changing, so
+// the exact search must tell every step of the pair's impossible swap apart and runs out of
+// states; told that nothing near the pair moves after step 0, it exhausts the swap's few joint
+// states at once.
+TEST(JointPathSearch, MergesStatesPastTheStepItIsGiven) {
+  const World w(mapFromRows({"......@...", "@@@@@@@..."}),
+                {dot("a", {0, 0, 0}, {5, 0, 0}), dot("b", {5, 0, 1}, {0, 0, 1}), dot("far", {8, 0, 0}, {8, 0, 0})});
+  const Subproblem sub = allRobots(w);
+  const SearchSpace space(sub);
+  SoftPathTable table(space);
+  const StateGraph& g = space.graph(2);
+  StatePath to_and_fro;
+  for (int t = 0; t < 2000; ++t) to_and_fro.push_back(g.id({8, 0, t % 2 == 0 ? 0 : 2}));  // turning
+  to_and_fro.push_back(g.id({8, 0, 0}));
+  ASSERT_NE(to_and_fro[1], kNoState);
+  table.insert(2, to_and_fro);
+  JointSearchOptions options;
+  options.max_nodes = 20'000;
+  const JointSearchResult exact = jointPathSearch(space, {0, 1}, table, sub.deadline, options);
+  EXPECT_EQ(exact.outcome, JointSearchResult::Outcome::NodeLimit);
+  options.static_from = 0;
+  const JointSearchResult merged = jointPathSearch(space, {0, 1}, table, sub.deadline, options);
+  EXPECT_EQ(merged.outcome, JointSearchResult::Outcome::NoPath);
+  EXPECT_LT(merged.expansions, 2'000);
+}
+
 TEST(JointPathSearch, RejectsGroupsLargerThanItsLimit) {
   const World w(freeMap(6, 2), {dot("a", {0, 0, 0}, {5, 0, 0}), dot("b", {1, 0, 0}, {4, 0, 0}),
                                 dot("c", {0, 1, 0}, {5, 1, 0}), dot("d", {1, 1, 0}, {4, 1, 0})});

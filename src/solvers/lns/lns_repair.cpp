@@ -1,5 +1,6 @@
 // LA-LNS: replanning a neighbourhood; see lns_search.h.
 #include <algorithm>
+#include <climits>
 
 #include "fleet_planner/infeasibility/infeasible_pairs.h"
 #include "fleet_planner/solvers/lns/joint_repair.h"
@@ -78,16 +79,47 @@ bool LnsSearch::planTogether(const std::vector<int>& group) {
   return false;
 }
 
+// The last step at which an agent outside the group stands within reach of the box, plus one
+// (an agent that ends there counts until its path ends: it stays for good from then on).
+int LnsSearch::stillNear(const std::vector<int>& group, const std::vector<StateId>& at, int t0, int lead) const {
+  const int reach = (lead + 8) * space_.graph(group[0]).actionModel().step;
+  int x0 = INT_MAX, y0 = INT_MAX, x1 = INT_MIN, y1 = INT_MIN;
+  for (std::size_t k = 0; k < group.size(); ++k) {
+    for (const StateId s : {at[k], space_.target(group[k])}) {
+      const GridPose p = space_.graph(group[k]).pose(s);
+      x0 = std::min(x0, p.x), y0 = std::min(y0, p.y), x1 = std::max(x1, p.x), y1 = std::max(y1, p.y);
+    }
+  }
+  int last = t0;
+  for (int b = 0; b < n_; ++b) {
+    if (!table_.contains(b) || std::find(group.begin(), group.end(), b) != group.end()) continue;
+    const StatePath& path = table_.path(b);
+    for (int t = static_cast<int>(path.size()) - 1; t > last; --t) {
+      const GridPose p = space_.graph(b).pose(path[t]);
+      if (p.x >= x0 - reach && p.x <= x1 + reach && p.y >= y0 - reach && p.y <= y1 + reach) {
+        last = t;
+        break;
+      }
+    }
+  }
+  return last + 1;
+}
+
 bool LnsSearch::planTogetherLater(const std::vector<int>& group, JointSearchOptions options) {
   std::vector<StatePath> before(n_);
   for (int a : group) before[a] = joint_before_[a];
   const std::optional<AgentConflict> met = firstConflict(space_, before);
   if (!met) return false;
   const int n = static_cast<int>(group.size());
+  // Four times the joint states of the search from step 0: it tries up to 2 x (n + 1) starts,
+  // each from closer to the knot, where the states go to the timing of waits.
+  options.max_nodes *= 4;
   // Leads of a few dozen steps: enough to make way for each other, few enough to search. At
   // each, the members where their paths have them then, and then each member instead held at
   // its start until then: a robot that drove into a place it cannot leave (a target at a wall
-  // it cannot turn at) must wait for the other where it stood.
+  // it cannot turn at) must wait for the other where it stood. Steps after the last agent
+  // near the group stops are merged (stillNear): robots far away that drive on for long
+  // would otherwise make every step of a wait a state of its own.
   for (const int lead : {kLaterLead, 4 * kLaterLead}) {
     const int t0 = met->t - lead;
     if (t0 <= 0) return false;
@@ -95,6 +127,7 @@ bool LnsSearch::planTogetherLater(const std::vector<int>& group, JointSearchOpti
       options.from.clear();
       for (int k = 0; k < n; ++k) options.from.push_back(stateAt(before[group[k]], k == held ? 0 : t0));
       options.from_step = t0;
+      options.static_from = stillNear(group, options.from, t0, lead);
       const JointSearchResult r = jointPathSearch(space_, group, table_, problem_.deadline, options);
       stats_.low_level_expansions += r.expansions;
       if (r.outcome == JointSearchResult::Outcome::Expired) return false;

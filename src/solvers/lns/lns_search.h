@@ -107,6 +107,9 @@ class LnsSearch {
   // steps later) is then a search of a few dozen steps, where the search from step 0 spends its
   // states on the way there.
   bool planTogetherLater(const std::vector<int>& group, JointSearchOptions options);
+  // The step after which no agent outside the group comes near it (JointSearchOptions::static_from):
+  // within lead + 8 moves of the box around the members' states `at` and their targets.
+  int stillNear(const std::vector<int>& group, const std::vector<StateId>& at, int t0, int lead) const;
 
   // The group alone among the static obstacles by LA-LaCAM, its paths put in the table (soft
   // towards the others); false if it found none or the subproblem has moving obstacles.

@@ -80,7 +80,9 @@ JointSearchResult jointPathSearch(const SearchSpace& space, const std::vector<in
     if (last == ReservationTable::kForever) return result;
     goal_earliest[i] = last + 1;
   }
-  const int static_from = std::max(soft.lastMove(), reservations.lastChange()) + 1;
+  const int exact_static_from = std::max(soft.lastMove(), reservations.lastChange()) + 1;
+  const int static_from = options.static_from >= 0 ? std::min(exact_static_from, options.static_from)
+                                                   : exact_static_from;
   const int w = options.collision_cost;
 
   const unsigned all = (1u << n) - 1;

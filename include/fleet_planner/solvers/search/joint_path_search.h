@@ -33,6 +33,13 @@ struct JointSearchOptions {
   /// states from from_step on). Empty: at their starts at step 0.
   std::vector<StateId> from;
   int from_step = 0;
+  /// Joint states that differ only in a step after this one are taken as the same (>= 0; by
+  /// default the step from which the soft agents and the reservations stop moving, where that
+  /// is exact). An earlier one, the step after which the agents near the group stop, makes far
+  /// fewer states when robots far away drive on for long: every collision is still counted at
+  /// its true step, but a plan that waits for a pass after it may be missed, so NoPath is then
+  /// no proof.
+  int static_from = -1;
 };
 
 struct JointSearchResult {
