@@ -43,19 +43,22 @@ TEST(LaLns, UntiesAKnotFarFromTheStartsByAJointSearchStartedLater) {
   wide.sweep_tolerance = round.sweep_tolerance = 0.2;  // the benchmark's (docs/benchmarking.md)
   const World w(*paris, {makeRobot("95", wide, {231, 2, 0}, {226, 2, 1}),
                          makeRobot("60", round, {74, 140, 1}, {231, 3, 2})});
-  Subproblem sub = allRobots(w, 60.0);
+  Subproblem sub = allRobots(w, 300.0);  // the expansions decide, not the machine
   sub.max_expansions = 5'000'000;
   const Outcome o = solveWith("la_lns", w, sub);
   EXPECT_TRUE(solvedValidly(o)) << describe(o);
 }
 
-// The same two with robots 112 (leaving from beside the block's start) and 293 (parking at the
-// strip's far end, about step 120), which the block must let past too: held at its start for
-// the circle, the block now takes a way that makes room for them and is back by then (safe
-// intervals), and the joint search merges the steps after the last robot near the knot stops,
-// where robots far away drive on for long. With solver seed 0; seeds 1-3 still run out
-// (docs/history.md, session 48).
-TEST(LaLns, UntiesAKnotWhereTheHeldRobotMustLetOthersPastFirst) {
+// The same two with robots 112 (leaving from beside the block's start for the far south) and
+// 293 (parking at the strip's far end). 112 drives on for hundreds of steps far from the knot,
+// so the later joint search must merge the steps after the robots near the knot stop, or it
+// runs out of states where the pair alone needs 37,000. With solver seed 0; seeds 1-3 still
+// run out (docs/history.md, session 48).
+TEST(LaLns, UntiesAKnotOfFourWhereRobotsFarAwayDriveOnForLong) {
+#if defined(__SANITIZE_ADDRESS__)
+  // 11 million expansions, 14 s in a release build: the pair's test above runs the same code.
+  GTEST_SKIP() << "too slow under the sanitizers";
+#endif
   const std::optional<GridMap> paris = sharedBenchmarkMap("Paris_1_256");
   if (!paris) GTEST_SKIP() << "no ../shared/benchmark";
   Footprint wide = Footprint::block(-1.9, -2, 1.3, 2), round = Footprint::circle(1.1);
@@ -65,7 +68,7 @@ TEST(LaLns, UntiesAKnotWhereTheHeldRobotMustLetOthersPastFirst) {
                          makeRobot("95", wide, {231, 2, 0}, {226, 2, 1}),
                          makeRobot("112", small, {245, 4, 3}, {223, 179, 2}),
                          makeRobot("293", square, {220, 92, 3}, {245, 5, 0})});
-  Subproblem sub = allRobots(w, 120.0, 0);
+  Subproblem sub = allRobots(w, 300.0, 0);  // the expansions decide, not the machine
   sub.max_expansions = 16'000'000;
   const Outcome o = solveWith("la_lns", w, sub);
   EXPECT_TRUE(solvedValidly(o)) << describe(o);
