@@ -124,6 +124,8 @@ bool LnsSearch::planTogetherLater(const std::vector<int>& group, JointSearchOpti
     const int t0 = met->t - lead;
     if (t0 <= 0) return false;
     for (int held = -1; held < n; ++held) {
+      // A member at its start at t0 anyway: holding it there is the search just made.
+      if (held >= 0 && stateAt(before[group[held]], t0) == stateAt(before[group[held]], 0)) continue;
       options.from.clear();
       for (int k = 0; k < n; ++k) options.from.push_back(stateAt(before[group[k]], k == held ? 0 : t0));
       options.from_step = t0;

@@ -24,10 +24,10 @@
 
 namespace fleet_planner {
 
-/// How a repair chooses its neighbourhood (adaptive LNS: each method's weight grows with its help).
 // planTogetherLater's first lead: steps before the group's members first meet.
 constexpr int kLaterLead = 32;
 
+/// How a repair chooses its neighbourhood (adaptive LNS: each method's weight grows with its help).
 enum Method { kCollisionGraph = 0, kIdealPath = 1, kRandom = 2, kJoint = 3, kMethods = 4 };
 
 class LnsSearch {
