@@ -108,6 +108,41 @@ std::size_t hashCells(const CellSet& set, std::size_t seed) {
   return seed;
 }
 
+// The cells of a footprint at a yaw or turning between two yaws (`turn`), computed once:
+// a robot at a yaw off the grid headings has its shapes asked for by the lattice connection, the
+// plan's assembly and every validation of its plan, and each costs trigonometry over every cell
+// near the footprint (about half a millisecond for a real robot at 0.05 m). Thread-safe; the
+// last kKept distinct shapes are kept.
+template <class Make>
+CellSet remembered(const Footprint& footprint, bool turn, double from, double to, Make make) {
+  struct Shape {
+    Footprint footprint;
+    bool turn;
+    double from, to;
+    CellSet cells;
+  };
+  constexpr std::size_t kKept = 1024;
+  static std::mutex mutex;
+  static std::deque<Shape> kept;  // newest first
+  const auto find = [&]() -> const CellSet* {
+    for (const Shape& k : kept) {
+      if (k.turn == turn && k.from == from && k.to == to && k.footprint == footprint) return &k.cells;
+    }
+    return nullptr;
+  };
+  {
+    const std::lock_guard<std::mutex> lock(mutex);
+    if (const CellSet* cells = find()) return *cells;
+  }
+  CellSet made = make();  // outside the lock: other threads' lookups need not wait
+  const std::lock_guard<std::mutex> lock(mutex);
+  if (find() == nullptr) {
+    kept.push_front({footprint, turn, from, to, made});
+    if (kept.size() > kKept) kept.pop_back();
+  }
+  return made;
+}
+
 }  // namespace
 
 FootprintCells::FootprintCells(const Footprint& footprint, int step) : footprint_(footprint), step_(step) {
@@ -158,7 +193,9 @@ FootprintCells::FootprintCells(const Footprint& footprint, int step) : footprint
   }
 }
 
-CellSet footprintCellsAt(const Footprint& footprint, double yaw) { return footprintCellsAt(footprint, yaw, Vec2(0, 0)); }
+CellSet footprintCellsAt(const Footprint& footprint, double yaw) {
+  return remembered(footprint, false, yaw, yaw, [&] { return footprintCellsAt(footprint, yaw, Vec2(0, 0)); });
+}
 
 CellSet footprintCellsAt(const Footprint& footprint, double yaw, const Vec2& offset) {
   // A cell (dx, dy) is the unit square centred there; relative to the robot's origin its centre
@@ -182,13 +219,15 @@ CellSet footprintCellsAt(const Footprint& footprint, double yaw, const Vec2& off
 }
 
 CellSet turnSweep(const Footprint& footprint, double from_yaw, double to_yaw) {
-  const CellSet start = footprintCellsAt(footprint, from_yaw), end = footprintCellsAt(footprint, to_yaw);
-  if (footprint.kind == Footprint::Kind::Circle) return start;
-  const double turn = std::remainder(to_yaw - from_yaw, 2 * geometry::kPi);  // in [-pi, pi]
-  const CellSet swept = sectorSweep(rotatedBy(footprint.outline(), from_yaw),
-                                    rotatedBy(footprint.outline(), from_yaw + turn), turn,
-                                    footprint.circumscribedRadius(), footprint.sweep_tolerance);
-  return swept.unionWith(start, {0, 0}).unionWith(end, {0, 0});
+  if (footprint.kind == Footprint::Kind::Circle) return footprintCellsAt(footprint, from_yaw);
+  return remembered(footprint, true, from_yaw, to_yaw, [&] {
+    const CellSet start = footprintCellsAt(footprint, from_yaw), end = footprintCellsAt(footprint, to_yaw);
+    const double turn = std::remainder(to_yaw - from_yaw, 2 * geometry::kPi);  // in [-pi, pi]
+    const CellSet swept = sectorSweep(rotatedBy(footprint.outline(), from_yaw),
+                                      rotatedBy(footprint.outline(), from_yaw + turn), turn,
+                                      footprint.circumscribedRadius(), footprint.sweep_tolerance);
+    return swept.unionWith(start, {0, 0}).unionWith(end, {0, 0});
+  });
 }
 
 bool FootprintCells::sameCells(const FootprintCells& other) const {

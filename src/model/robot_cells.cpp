@@ -5,6 +5,12 @@
 
 namespace fleet_planner {
 
+namespace {
+
+int farthest(const CellSet& c) { return c.empty() ? 0 : std::max({-c.minX(), c.maxX(), -c.minY(), c.maxY()}); }
+
+}  // namespace
+
 RobotCells::RobotCells(const Robot& robot, const FootprintCells& cells, const Path& path)
     : RobotCells(robot, cells, path, nullptr) {}
 
@@ -13,6 +19,11 @@ RobotCells::RobotCells(const Robot& robot, const RobotCells& shapes, const Path&
 
 RobotCells::RobotCells(const Robot& robot, const FootprintCells& cells, const Path& path, const RobotCells* shapes)
     : cells_(cells), path_(path), last_(static_cast<int>(path.size()) - 1) {
+  // The farthest cell along an axis of any body or sweep on the grid headings (a body lies in
+  // its rotations' sweeps, a shorter move's sweep in the step's); the yaw shapes' below.
+  for (int h = 0; h < kHeadings; ++h) {
+    for (int a = 0; a < kActions; ++a) reach_ = std::max(reach_, farthest(cells.swept(h, static_cast<Action>(a))));
+  }
   turn_ = robot.start_yaw ? std::max(0, robot.start_turn) : -1;
   const int turns = (robot.start_yaw ? turn_ + 1 : 0) + (robot.target_yaw ? 1 : 0);
   if (path.empty()) return;
@@ -42,6 +53,9 @@ RobotCells::RobotCells(const Robot& robot, const FootprintCells& cells, const Pa
     end_body_ = same_end ? shapes->end_body_ : footprintCellsAt(cells.footprint(), *robot.target_yaw);
     end_turn_ = same_end ? shapes->end_turn_
                          : turnSweep(cells.footprint(), headingYaw(path[last_].heading), *robot.target_yaw);
+  }
+  for (const std::optional<CellSet>* c : {&start_body_, &start_turn_, &end_body_, &end_turn_}) {
+    if (*c) reach_ = std::max(reach_, farthest(**c));
   }
 }
 

@@ -1,5 +1,6 @@
 // Assembling a full plan from a lattice plan and the robots' connections; see lattice.h.
 #include <algorithm>
+#include <cstdlib>
 #include <memory>
 #include <numeric>
 
@@ -10,11 +11,15 @@ namespace fleet_planner {
 
 bool pathsMeet(const RobotCells& a, const Path& pa, const RobotCells& b, const Path& pb, int from, const ActionModel& model) {
   const int end = static_cast<int>(std::max(pa.size(), pb.size()));
+  // Robots farther apart than their reaches at the start of a step share no cell during it (a
+  // step's sweep is within the reach of the cell it starts from).
+  const int apart = a.reach() + b.reach();
   for (int u = std::max(0, from); u < end; ++u) {
+    const GridPose &a0 = stateAt(pa, u), &b0 = stateAt(pb, u);
+    if (std::abs(a0.x - b0.x) > apart || std::abs(a0.y - b0.y) > apart) continue;
     const CellSet* sa = a.sweepAt(u, model);
     const CellSet* sb = b.sweepAt(u, model);
     if (sa == nullptr || sb == nullptr) return true;  // not a motion: never taken as clear
-    const GridPose &a0 = stateAt(pa, u), &b0 = stateAt(pb, u);
     if (CellSet::overlap(*sa, {a0.x, a0.y}, *sb, {b0.x, b0.y})) return true;
   }
   const GridPose &a1 = pa.back(), &b1 = pb.back();

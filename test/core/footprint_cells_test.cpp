@@ -221,5 +221,27 @@ TEST(FootprintCells, SharedCellsAreBuiltOncePerFootprintAndStep) {
   EXPECT_TRUE(first->sameCells(fresh));
 }
 
+TEST(FootprintCells, YawShapesAskedAgainAreEachFootprintsOwn) {
+  // The shapes at a yaw and of a turn are kept once computed: asked again, for another footprint
+  // or for a turn instead of a body, each is still the one of a fresh computation.
+  const Footprint small = Footprint::block(-1.5, -0.5, 1.5, 0.5), big = Footprint::block(-2.0, -1.1, 2.0, 1.1);
+  const Eigen::Vector2d centred(0, 0);  // with an offset: never kept, computed each time
+  const CellSet small_body = footprintCellsAt(small, 0.4), small_turn = turnSweep(small, 0.4, 1.2);
+  EXPECT_EQ(small_body, footprintCellsAt(small, 0.4, centred));
+  EXPECT_EQ(footprintCellsAt(big, 0.4), footprintCellsAt(big, 0.4, centred));
+  EXPECT_NE(footprintCellsAt(big, 0.4), small_body);
+  EXPECT_EQ(footprintCellsAt(small, 0.4), small_body);
+  EXPECT_EQ(turnSweep(small, 0.4, 1.2), small_turn);
+  EXPECT_GT(turnSweep(big, 0.4, 1.2).size(), small_turn.size());
+  EXPECT_GT(small_turn.size(), small_body.size());  // a turn is not the body at its first yaw
+  // Both ends of a turn lie in it, whichever way it is asked.
+  for (const auto& [from, to] : {std::pair{0.4, 1.2}, std::pair{1.2, 0.4}}) {
+    const CellList turn = asList(turnSweep(small, from, to));
+    for (const double yaw : {from, to}) {
+      for (const auto& c : asList(footprintCellsAt(small, yaw, centred))) EXPECT_TRUE(turn.count(c)) << yaw;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace fleet_planner

@@ -5,6 +5,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cstdlib>
+
 #include "../test_robots.h"
 
 namespace fleet_planner::test {
@@ -49,6 +52,32 @@ TEST(RobotCells, ReusedYawShapesMatchFreshOnes) {
   const RobotCells fresh_turned(robot, cells, turned);
   ASSERT_NE(fresh_turned.sweepAt(6, model), nullptr);
   EXPECT_NE(*fresh_turned.sweepAt(6, model), *shapes.sweepAt(5, model));
+}
+
+TEST(RobotCells, EveryCellLiesWithinTheReach) {
+  Robot robot = makeRobot("r", Footprint::block(-1.6, -0.9, 1.4, 0.9), {5, 5, 0}, {9, 9, 2});
+  robot.start_yaw = 0.7;
+  robot.target_yaw = 2.1;
+  const FootprintCells cells(robot.footprint, 2);
+  const ActionModel model{false, 2};
+  // Turn from the start yaw, two moves of the lattice step, a rotation, two moves, the turn to
+  // the target yaw.
+  const Path path{{5, 5, 0}, {5, 5, 0}, {7, 5, 0}, {9, 5, 0}, {9, 5, 2}, {9, 7, 2}, {9, 9, 2}, {9, 9, 2}};
+  const RobotCells along(robot, cells, path);
+  ASSERT_EQ(along.shapeProblem(), "");
+  int farthest = 0;
+  for (int t = 0; t <= static_cast<int>(path.size()); ++t) {
+    const CellSet* sweep = along.sweepAt(t, model);
+    ASSERT_NE(sweep, nullptr) << t;
+    for (const CellSet* set : {&along.bodyAt(t), sweep}) {
+      for (const Cell& c : set->cells()) {
+        EXPECT_LE(std::max(std::abs(c.x), std::abs(c.y)), along.reach()) << "step " << t;
+        farthest = std::max({farthest, std::abs(c.x), std::abs(c.y)});
+      }
+    }
+  }
+  // A bound, and a close one (a backward move, not on this path, sweeps one cell farther).
+  EXPECT_LE(along.reach(), farthest + 1);
 }
 
 }  // namespace

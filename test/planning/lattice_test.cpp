@@ -6,9 +6,11 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <iostream>
 
 #include "fleet_planner/model/plan_validator.h"
+#include "fleet_planner/model/robot_cells.h"
 #include "fleet_planner/planning/plan_fleet.h"
 #include "fleet_planner/runtime/random.h"
 #include "test_maps.h"
@@ -141,6 +143,45 @@ TEST(Lattice, SameInputSamePlan) {
   EXPECT_EQ(a.lattice_step, b.lattice_step);
   EXPECT_EQ(a.plan.paths, b.plan.paths);
   EXPECT_EQ(a.plan.paths, c.plan.paths);
+}
+
+// pathsMeet, which skips the steps at which the robots are farther apart than their reaches,
+// answers as a check of every step's cells does: a robot at a yaw turning onto the x axis and
+// driving along it, another crossing its way or waiting beside it at every offset around it.
+TEST(Lattice, PathsMeetAsACheckOfEveryStepSays) {
+  const ActionModel model{false, 2};
+  Robot a = makeRobot("a", Footprint::block(-1.6, -0.9, 1.4, 0.9), {10, 10, 0}, {16, 10, 0});
+  a.start_yaw = 0.5;
+  const Robot b = makeRobot("b", Footprint::circle(1.2), {0, 0, 2}, {0, 0, 2});
+  const auto cells_a = sharedFootprintCells(a.footprint, 2), cells_b = sharedFootprintCells(b.footprint, 2);
+  const Path pa{{10, 10, 0}, {10, 10, 0}, {12, 10, 0}, {14, 10, 0}, {16, 10, 0}};
+  const RobotCells along_a(a, *cells_a, pa);
+  ASSERT_EQ(along_a.shapeProblem(), "");
+  int met = 0, apart = 0;
+  for (int dx = -12; dx <= 12; ++dx) {
+    for (int dy = -8; dy <= 8; dy += 2) {
+      for (const bool crossing : {false, true}) {
+        Path pb{{16 + dx, 10 + dy, 2}};
+        if (crossing) pb = {{12 + dx, 6 + dy, 2}, {12 + dx, 8 + dy, 2}, {12 + dx, 10 + dy, 2}, {12 + dx, 12 + dy, 2}};
+        const RobotCells along_b(b, *cells_b, pb);
+        for (const int from : {0, 2}) {
+          bool every_step = false;
+          const int end = static_cast<int>(std::max(pa.size(), pb.size()));
+          for (int u = from; u < end && !every_step; ++u) {
+            const GridPose &p = stateAt(pa, u), &q = stateAt(pb, u);
+            every_step = CellSet::overlap(*along_a.sweepAt(u, model), {p.x, p.y}, *along_b.sweepAt(u, model), {q.x, q.y});
+          }
+          every_step = every_step || CellSet::overlap(along_a.bodyAt(end), {pa.back().x, pa.back().y},
+                                                      along_b.bodyAt(end), {pb.back().x, pb.back().y});
+          EXPECT_EQ(pathsMeet(along_a, pa, along_b, pb, from, model), every_step)
+              << "offset " << dx << "," << dy << (crossing ? " crossing" : " waiting") << " from " << from;
+          (every_step ? met : apart) += 1;
+        }
+      }
+    }
+  }
+  EXPECT_GT(met, 50);  // both answers are common
+  EXPECT_GT(apart, 50);
 }
 
 TEST(AnyYaw, StartsAndTargetsAtAnyYawAreTurnedFromAndToOnTheLatticeAndOff) {

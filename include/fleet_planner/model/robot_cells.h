@@ -33,6 +33,9 @@ class RobotCells {
   /// What it covers during the step t -> t + 1, relative to stateAt(path, t); null if that step
   /// is no legal motion under `model`.
   const CellSet* sweepAt(int t, const ActionModel& model) const;
+  /// No cell of any body or sweep lies farther than this from the robot's cell along either axis:
+  /// two robots whose cells are farther apart than the sum of their reaches cannot meet.
+  int reach() const { return reach_; }
   /// The action of the step t -> t + 1 (a turn to or from a yaw counts as a rotation).
   std::optional<Action> actionAt(int t, const ActionModel& model) const;
 
@@ -43,6 +46,7 @@ class RobotCells {
   const Path& path_;
   int last_;  ///< the path's last time
   int turn_ = -1;  ///< the step of the turn from the start yaw (-1: none)
+  int reach_ = 0;
   std::optional<CellSet> start_body_, start_turn_, end_body_, end_turn_;
   std::string shape_problem_;
 };
