@@ -37,9 +37,14 @@ struct Scratch {
 
 class Builder {
  public:
-  Builder(const Instance& instance, const FleetGraphs& graphs, int representative, Scratch& s)
-      : instance_(instance), graphs_(graphs), g_(graphs.graph(representative)), cells_(graphs.cells(representative)), s_(s) {
+  // The graph of the robots `users` (one graph).
+  Builder(const Instance& instance, const FleetGraphs& graphs, const std::vector<int>& users, Scratch& s)
+      : instance_(instance), graphs_(graphs), g_(graphs.graph(users.front())), cells_(graphs.cells(users.front())), s_(s),
+        step_(g_.actionModel().step), used_offset_(static_cast<std::size_t>(step_ * step_), 0) {
     s_.resize(g_.stateIdCount());
+    for (int i : users) {
+      for (const GridPose& p : {instance.robots[i].start, instance.robots[i].target}) used_offset_[offset(p)] = 1;
+    }
   }
 
   std::shared_ptr<ComponentGraph> build() {
@@ -138,12 +143,19 @@ class Builder {
     pairs_.push_back({u, sat});
   }
 
-  // Tarjan's strongly connected components, iterative, over edges within one relation id.
+  // The index of a pose's lattice offset (x and y modulo the step).
+  int offset(const GridPose& p) const { return (p.y % step_) * step_ + p.x % step_; }
+  // A state of a lattice that one of the graph's robots stands on: a move keeps a state on its
+  // lattice, so the components of the other lattices are never reached from the robots' own.
+  bool used(StateId u) const { return step_ == 1 || used_offset_[offset(g_.pose(u))]; }
+
+  // Tarjan's strongly connected components, iterative, over edges within one relation id, on
+  // the robots' lattices.
   void components() {
     int counter = 0;
     std::vector<Visit>& vis = s_.visit;
     for (StateId root = 0; root < g_.stateIdCount(); ++root) {
-      if (!g_.valid(root) || vis[root].index >= 0) continue;
+      if (!g_.valid(root) || vis[root].index >= 0 || !used(root)) continue;
       open(root, counter);
       while (!s_.calls.empty()) {
         const StateId u = s_.calls.back().first;
@@ -197,7 +209,7 @@ class Builder {
     // Edges between components, in one sequential pass.
     std::vector<std::pair<std::int32_t, std::int32_t>> cross;
     for (StateId u = 0; u < g_.stateIdCount(); ++u) {
-      if (!g_.valid(u)) continue;
+      if (!g_.valid(u) || !used(u)) continue;
       const std::int32_t cu = s_.visit[u].comp;
       g_.forEachSuccessor(u, [&](Action, StateId v) {
         if (s_.visit[v].comp != cu) cross.push_back({cu, s_.visit[v].comp});
@@ -218,6 +230,8 @@ class Builder {
   const StateGraph& g_;
   const FootprintCells& cells_;
   Scratch& s_;
+  const int step_;
+  std::vector<char> used_offset_;  // by offset(): a robot of the graph stands on that lattice
   struct Range {
     int y, x0, x1;
     bool operator<(const Range& o) const { return y != o.y ? y < o.y : x0 < o.x0; }
@@ -245,7 +259,7 @@ std::vector<RelationGraph> buildRelationGraphs(const Instance& instance, const F
     for (int k = next++; k < graphs.numGraphs(); k = next++) {
       if (users[k].empty()) continue;
       if (deadline.expired()) break;  // a component graph takes up to a few hundred ms on a large map
-      Builder builder(instance, graphs, users[k].front(), scratch);
+      Builder builder(instance, graphs, users[k], scratch);
       const std::shared_ptr<const ComponentGraph> shared = builder.build();
       for (int i : users[k]) {
         const StateGraph& g = graphs.graph(i);

@@ -334,6 +334,29 @@ TEST(Decomposition, RelationGraphsStopAtTheDeadline) {
   }
 }
 
+// On a lattice of step 2 one graph serves robots on different lattices (offsets): the
+// component graph covers each robot's own. Dot a (odd x) drives along a corridor past the
+// start and target of dot b (even x), which drives along it too.
+TEST(Decomposition, RelationGraphsOnALatticeCoverEveryRobotsOwnLattice) {
+  const GridMap map = mapFromRows({"@@@@@@@@@@@@@", ".............", "@@@@@@@@@@@@@"});
+  Instance instance{{dot("a", {1, 1, 0}, {11, 1, 0}), dot("b", {6, 1, 0}, {8, 1, 0})}, ""};
+  const FleetGraphs graphs(map, footprintsOf(instance), ActionModel{false, 2});
+  ASSERT_EQ(graphs.graphIndex(0), graphs.graphIndex(1));
+  const std::vector<RelationGraph> relations = buildRelationGraphs(instance, graphs, 1, Deadline::in(60));
+  for (const RelationGraph& r : relations) {
+    ASSERT_NE(r.graph, nullptr);
+    EXPECT_GE(r.start, 0) << "robot " << r.robot;
+    EXPECT_GE(r.target, 0) << "robot " << r.robot;
+    EXPECT_TRUE(pathExists(r, SatFilter{})) << "robot " << r.robot;
+  }
+  // a's way passes b's start (SAT 2) and b's target (SAT 3); b's passes neither of a's ends.
+  SatFilter without_b_start;
+  without_b_start.avoided = {0, 0, 1, 0};
+  EXPECT_FALSE(pathExists(relations[0], without_b_start));
+  EXPECT_EQ(searchPathSats(relations[0], SatFilter{}), (std::vector<int>{2, 3}));
+  EXPECT_EQ(searchPathSats(relations[1], SatFilter{}), std::vector<int>{});
+}
+
 // Two dots trading ends of a corridor cannot go one after the other (each one's target is the
 // other's start); a third on a row of its own can go before or after either.
 TEST(Decomposition, EntangledPairsNameTheRobotsThatNoOrderServes) {

@@ -27,6 +27,22 @@ class NodeTable {
   }
   /// Bytes held.
   std::size_t bytes() const { return slots_.capacity() * sizeof(slots_[0]) + used_.capacity() * sizeof(used_[0]); }
+  /// The entry of `key`; if there is none, one added with `node` (`added` says which).
+  int& findOrAdd(std::uint64_t key, int node, bool& added) {
+    if (2 * (size_ + 1) > slots_.size()) grow();
+    std::size_t i = slot(key);
+    for (; slots_[i].second >= 0; i = (i + 1) & (slots_.size() - 1)) {
+      if (slots_[i].first == key) {
+        added = false;
+        return slots_[i].second;
+      }
+    }
+    slots_[i] = {key, node};
+    used_.push_back(static_cast<std::uint32_t>(i));
+    ++size_;
+    added = true;
+    return slots_[i].second;
+  }
   void set(std::uint64_t key, int node) {
     if (int* existing = find(key)) {
       *existing = node;

@@ -292,15 +292,20 @@ SafeIntervalResult searchBetween(const SearchSpace& space, int a, const SoftPath
     return p.index > q.index;
   };
   std::vector<SearchMemory::Open>& open = memory.open;  // a heap: the node to expand next in front
-  auto push = [&](StateId s, int interval, int arrival, int parent) {
+  // A node of (s, interval) arriving at `arrival`, unless one arrives there as early already; a
+  // later one it replaces is marked stale (skipped when it comes off the heap).
+  auto push = [&](StateId s, int interval, int last, int arrival, int parent) {
     const int h = heuristic(s);
     if (arrival + h > (forever ? bound : t1 + max_delay)) return;  // cannot reach the goal in time
     const int f = weight == 1.0 ? arrival + h : arrival + static_cast<int>(weight * h);
-    const std::uint64_t k = key(s, interval);
-    const int* known = best.find(k);
-    if (known != nullptr && nodes[*known].g <= arrival) return;
-    best.set(k, static_cast<int>(nodes.size()));
-    nodes.push_back({s, interval, arrival, f, parent});
+    bool added = false;
+    int& entry = best.findOrAdd(key(s, interval), static_cast<int>(nodes.size()), added);
+    if (!added) {
+      if (nodes[entry].g <= arrival) return;
+      nodes[entry].stale = true;
+      entry = static_cast<int>(nodes.size());
+    }
+    nodes.push_back({s, interval, last, arrival, f, parent, false});
     open.push_back({f, arrival, static_cast<int>(nodes.size()) - 1});
     std::push_heap(open.begin(), open.end(), worse);
   };
@@ -311,7 +316,7 @@ SafeIntervalResult searchBetween(const SearchSpace& space, int a, const SoftPath
     nodes.clear();
     best.clear();
     open.clear();
-    push(from, first_interval, begin, -1);
+    push(from, first_interval, first[first_interval].last, begin, -1);
     while (!open.empty()) {
       if ((result.expansions & 255) == 0 && deadline.expired()) {
         result.outcome = SafeIntervalResult::Outcome::Expired;
@@ -325,11 +330,10 @@ SafeIntervalResult searchBetween(const SearchSpace& space, int a, const SoftPath
       std::pop_heap(open.begin(), open.end(), worse);
       open.pop_back();
       const Node node = nodes[index];
-      if (*best.find(key(node.s, node.interval)) != index) continue;
+      if (node.stale) continue;
       ++result.expansions;
-      const Interval here = sipp.intervals(node.s)[node.interval];
-      // Finite t1: the agent can wait here until t1 (an arrival after t1 lies in `here` too).
-      const bool arrived = forever ? here.last == kNever : here.last >= t1 - 1;
+      // Finite t1: the agent can wait here until t1 (an arrival after t1 lies in its interval).
+      const bool arrived = forever ? node.last == kNever : node.last >= t1 - 1;
       if (node.s == goal && arrived) {
         std::vector<int> chain;
         for (int i = index; i >= 0; i = nodes[i].parent) chain.push_back(i);
@@ -351,7 +355,7 @@ SafeIntervalResult searchBetween(const SearchSpace& space, int a, const SoftPath
         const PoolRun<Interval> there = sipp.intervals(next);
         // A move that decomposes (SearchSpace::moveExtra) collides during step t iff waiting at
         // node.s or at next during t does, or its extra cells meet someone then. Departing at t
-        // within `here` and arriving at t + 1 within there[j] (t + 1 <= there[j].last) leaves
+        // within node's interval and arriving at t + 1 within there[j] (t + 1 <= there[j].last) leaves
         // only t = there[j].first - 1 to the body after, always unsafe when it is a step of the
         // search (the interval begins after an unsafe step): the departures from
         // there[j].first on, against the extra cells alone.
@@ -364,15 +368,15 @@ SafeIntervalResult searchBetween(const SearchSpace& space, int a, const SoftPath
                              [](const Interval& i, int t) { return i.last < t; }) -
             there.begin());
         for (int j = skip; j < static_cast<int>(there.size()); ++j) {
-          if (here.last != kNever && there[j].first > here.last + 1) break;
+          if (node.last != kNever && there[j].first > node.last + 1) break;
           if (!known) {
             move = extra != nullptr ? sipp.beyondBodies(node.s, act, *extra) : sipp.unsafe(node.s, act);
             known = true;
           }
-          const int hi = std::min(here.last, there[j].last == kNever ? kNever : there[j].last - 1);
+          const int hi = std::min(node.last, there[j].last == kNever ? kNever : there[j].last - 1);
           const int earliest = extra != nullptr ? there[j].first : there[j].first - 1;
           const int departure = Sipp::earliestDeparture(move, std::max(node.g, earliest), hi);
-          if (departure >= 0) push(next, j, departure + 1, index);
+          if (departure >= 0) push(next, j, there[j].last, departure + 1, index);
         }
       });
     }

@@ -27,9 +27,11 @@ struct Interval {
 struct Node {
   StateId s;
   int interval;
-  int g;  // arrival time
+  int last;  // the interval's last step (Interval::last)
+  int g;     // arrival time
   int f;
   int parent;
+  bool stale;  // a node of the same (state, interval) arriving earlier replaced it
 };
 
 // What a search allocates, kept from one search to the next on the same thread: a parking
