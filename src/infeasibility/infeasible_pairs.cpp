@@ -12,6 +12,10 @@ namespace {
 
 // Joint configurations the backward search of a pair's goal may collect (about 40 bytes each).
 constexpr long long kBackwardConfigurations = 1'000'000;
+// The same for its first, short try: a pair whose targets leave it few configurations to reach
+// them from is decided by it at once, where the forward search may spend its whole budget
+// before failing.
+constexpr long long kFirstBackwardConfigurations = 20'000;
 // Expansions of each single-robot search of a pair planned in turn: a robot's way across a
 // real map, around one other robot, takes a few thousand.
 constexpr long long kInTurnExpansions = 20'000;
@@ -67,18 +71,30 @@ std::optional<std::string> findInfeasiblePair(const Instance& instance, const Fl
     alone.instance = &instance;
     alone.graphs = &graphs;
     if (planPairInTurn(alone, a, b, kInTurnExpansions, deadline).success()) continue;
-    const SolveResult r = searchPairAlone(alone, a, b, max_expansions, deadline);
-    std::string why = r.reason;
-    if (r.status != SolveStatus::Infeasible) {
-      if (r.success()) continue;
-      // Forwards from the start the space was too large; backwards from the goal it may not be.
-      const PairEnds ends_a{a, instance.robots[a].start, instance.robots[a].target};
-      const PairEnds ends_b{b, instance.robots[b].start, instance.robots[b].target};
-      const PairSearch back =
-          searchPairBackwards(graphs, ends_a, ends_b, kBackwardConfigurations, deadline);
-      if (back.reach != PairReach::Unreachable) continue;
-      why = "every configuration from which both can reach their targets explored, " +
-            std::to_string(back.configurations) + " of them: their starts are not one";
+    const PairEnds ends_a{a, instance.robots[a].start, instance.robots[a].target};
+    const PairEnds ends_b{b, instance.robots[b].start, instance.robots[b].target};
+    auto backwards = [&](long long configurations) {
+      return searchPairBackwards(graphs, ends_a, ends_b, configurations, deadline);
+    };
+    auto unreachable = [](const PairSearch& back) {
+      return "every configuration from which both can reach their targets explored, " +
+             std::to_string(back.configurations) + " of them: their starts are not one";
+    };
+    std::string why;
+    const PairSearch first = backwards(kFirstBackwardConfigurations);
+    if (first.reach == PairReach::Reachable) continue;
+    if (first.reach == PairReach::Unreachable) {
+      why = unreachable(first);
+    } else {
+      const SolveResult r = searchPairAlone(alone, a, b, max_expansions, deadline);
+      why = r.reason;
+      if (r.status != SolveStatus::Infeasible) {
+        if (r.success()) continue;
+        // Forwards from the start the space was too large; backwards from the goal it may not be.
+        const PairSearch back = backwards(kBackwardConfigurations);
+        if (back.reach != PairReach::Unreachable) continue;
+        why = unreachable(back);
+      }
     }
     return "robots '" + instance.robots[a].id + "' and '" + instance.robots[b].id +
            "' cannot both reach their targets, even alone on the map (" + why + ")";

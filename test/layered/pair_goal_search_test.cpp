@@ -65,6 +65,24 @@ TEST(PairGoalSearch, ThePairProofFallsBackToIt) {
       << *proof;
 }
 
+// A pair with few configurations that reach its targets is decided by a short backward search
+// first, whatever the forward search's budget (which it would spend on a larger map before
+// failing).
+TEST(PairGoalSearch, ThePairProofTriesItFirst) {
+  const GridMap map = test::mapFromRows({"......."});
+  const Instance in = corridorSwap();
+  const FleetGraphs graphs(map, footprintsOf(in));
+  const std::optional<std::string> proof =
+      findInfeasiblePair(in, graphs, {{0, 1}}, 1'000'000, Deadline::in(5.0));
+  ASSERT_TRUE(proof.has_value());
+  EXPECT_NE(proof->find("every configuration from which both can reach their targets"),
+            std::string::npos)
+      << *proof;
+  // With a pocket the pair can trade places: no proof.
+  const GridMap pocket = test::mapFromRows({".......", "@@@.@@@"});
+  EXPECT_FALSE(findInfeasiblePair(in, FleetGraphs(pocket, footprintsOf(in)), {{0, 1}}, 1'000'000, Deadline::in(5.0)));
+}
+
 // Random pairs of robots up to 3 x 3 cells on small maps with obstacles, where LA-LaCAM's
 // search is complete within its budget: both searches give the same answer, and LA-LaCAM's plan
 // for a reachable pair is valid.
