@@ -12,7 +12,9 @@ namespace fleet_planner {
 bool pathsMeet(const RobotCells& a, const Path& pa, const RobotCells& b, const Path& pb, int from, const ActionModel& model) {
   const int end = static_cast<int>(std::max(pa.size(), pb.size()));
   // Robots farther apart than their reaches at the start of a step share no cell during it (a
-  // step's sweep is within the reach of the cell it starts from).
+  // step's sweep is within the reach of the cell it starts from). Such a step is not read, so a
+  // step that is no legal motion counts as a meeting only when the robots are near: the paths
+  // checked here are the planner's own, and the validator still checks every step.
   const int apart = a.reach() + b.reach();
   for (int u = std::max(0, from); u < end; ++u) {
     const GridPose &a0 = stateAt(pa, u), &b0 = stateAt(pb, u);
