@@ -71,7 +71,7 @@ class Refiner {
       : instance_(instance), graphs_(graphs), paths_(paths), deadline_(deadline), options_(options),
         n_(static_cast<int>(paths.size())),
         max_expansions_(std::min(options.max_expansions, options.expansions_per_robot * n_)),
-        lower_(n_, 0), known_(n_, 0), ideal_(n_) {
+        lower_(n_, 0), distance_(n_, -1), ideal_(n_) {
     // Every robot's path in one soft path table, kept up to date as paths are replaced: a
     // search reads the others' paths from it (its own is ignored), and only the searched
     // robot's distance table is built, for the search.
@@ -88,6 +88,7 @@ class Refiner {
       if (!track(i)) return;
     }
     tracked_ = true;
+    for (int i = 0; i < n_; ++i) bound(i);
   }
 
   RefinementStats run() {
@@ -126,8 +127,7 @@ class Refiner {
         std::max(longest_search_s_, std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count());
     return result;
   }
-  // Robots by how much they are delayed beyond their known lower bound, most first. Until a
-  // bound is known a robot's cost stands in for it (so the first pass visits robots by cost).
+  // Robots by how much they are delayed beyond their lower bound, most first.
   std::vector<int> delayOrder() const {
     std::vector<int> order(n_);
     std::iota(order.begin(), order.end(), 0);
@@ -142,7 +142,7 @@ class Refiner {
     for (int i : delayOrder()) {
       if (outOfBudget()) break;
       const int cost = costOf(i);
-      if (known_[i] && cost <= lower_[i]) continue;
+      if (cost <= bound(i)) continue;
       ++stats_.searches;
       Path better = timed([&] { return cheaperPath(i, cost); });
       if (better.empty()) continue;
@@ -162,7 +162,8 @@ class Refiner {
     int improved = 0;
     for (int i : delayOrder()) {
       if (outOfBudget()) break;
-      if (!known_[i] || costOf(i) <= lower_[i]) continue;
+      // The group's robots move too: only i's distance bounds its cost.
+      if (distance_[i] < 0 || costOf(i) <= distance_[i]) continue;
       if (ideal_[i].empty()) ideal_[i] = idealPath(instance_, graphs_, i, deadline_);
       std::vector<int> group = blockers(graphs_, paths_, i, ideal_[i], options_.group_size - 1);
       if (group.empty()) continue;
@@ -231,19 +232,27 @@ class Refiner {
     return true;
   }
 
+  // Robot i's lower bound, kept in lower_: its distance (once known) and the earliest arrival
+  // at its target for good that the others' passes over it allow (it changes as their paths
+  // are replaced). A robot held up by a late pass over its target is searched last, if at all.
+  int bound(int i) {
+    lower_[i] = std::max(distance_[i], earliestArrivalForGood(*space_, i, *table_));
+    return lower_[i];
+  }
+
   // Robot i's path around every other robot's path, strictly cheaper than `cost`; empty if
   // there is none (or the search hit a limit). Learns i's lower bound.
   Path cheaperPath(int i, int cost) {
     Path path;
     if (!space_->buildDistances(i, deadline_)) return path;  // the deadline passed
-    lower_[i] = space_->distance(i, space_->start(i));
-    known_[i] = 1;
+    distance_[i] = space_->distance(i, space_->start(i));
+    bound(i);
     // Safe intervals: a wait is one node, so a path that waits for others to pass costs a few
     // expansions, and the bound (arrive before `cost`) ends the search soon when there is no
     // cheaper path, where space-time A* must still try every step of every wait. Any cheaper
     // path improves the plan: a weighted heuristic finds one in fewer expansions than proving
     // the cheapest, and the bound (on the unweighted one) still keeps only cheaper paths.
-    if (lower_[i] >= 0 && lower_[i] < cost) {
+    if (distance_[i] >= 0 && lower_[i] < cost) {
       // Its own path out of the table while it searches: the table's answers leave it out
       // anyway, and read the cells' kept steps only for a robot that is not in it.
       const StatePath own = table_->contains(i) ? table_->path(i) : StatePath{};
@@ -268,8 +277,8 @@ class Refiner {
   const int n_;
   const long long max_expansions_;
   RefinementStats stats_;
-  std::vector<int> lower_;   // lower bounds on each robot's cost, learnt from the searches
-  std::vector<char> known_;  // lower_[i] is known
+  std::vector<int> lower_;     // lower bounds on each robot's cost (bound)
+  std::vector<int> distance_;  // each robot's distance to its target, learnt from its search; -1: not yet
   std::vector<Path> ideal_;
   double longest_search_s_ = 0.0;
   std::unique_ptr<SearchSpace> space_;  // every robot; distance tables only while searched

@@ -143,6 +143,45 @@ TEST(PlanRefinement, FindsALongWaitInAFewNodes) {
   EXPECT_EQ(stats.soc_saved, 13 + 30);
 }
 
+// The heading whose forward move goes one cell towards -y.
+int headingDown() {
+  for (int h = 0; h < 4; ++h) {
+    if (applyAction({0, 0, h}, Action::Forward).y == -1) return h;
+  }
+  return -1;
+}
+
+TEST(PlanRefinement, SearchesFirstTheRobotThatCanGainMost) {
+  // b drives down column 3, over a's target (3, 2) at step 20, after 17 waits it need not make;
+  // a arrives at its target right after b has left it, at the earliest it can (step 22). Both
+  // cost 22; with the budget of a single search, the refinement spends it on b.
+  const GridMap map = test::freeMap(8, 6);
+  const int down = headingDown();
+  ASSERT_GE(down, 0);
+  Instance in;
+  in.robots = {dot("a", {0, 2, 0}, {3, 2, 0}), dot("b", {3, 5, down}, {3, 0, down})};
+  std::vector<Action> a_actions(19, Action::Wait), b_actions(17, Action::Wait);
+  a_actions.insert(a_actions.end(), 3, Action::Forward);
+  b_actions.insert(b_actions.end(), 5, Action::Forward);
+  const Path a = pathOf(in.robots[0].start, a_actions);
+  Plan plan = planOf({a, pathOf(in.robots[1].start, b_actions)});
+  ASSERT_EQ(plan.paths[0].back(), in.robots[0].target);
+  ASSERT_EQ(plan.paths[1].back(), in.robots[1].target);
+  ASSERT_TRUE(validatePlan(map, in, plan).valid());
+  const FleetGraphs graphs(map, footprintsOf(in));
+  RefinementOptions options;
+  options.max_expansions = 1;
+  options.max_passes = 1;
+  options.group_size = 0;
+  const RefinementStats stats = refinePlan(in, graphs, plan.paths, Deadline::in(5), options);
+  const ValidationResult check = validatePlan(map, in, plan);
+  EXPECT_TRUE(check.valid()) << check.violation.message;
+  EXPECT_EQ(stats.searches, 1);
+  EXPECT_EQ(stats.improved, 1);
+  EXPECT_EQ(pathCost(plan.paths[1], in.robots[1].target), 5);
+  EXPECT_EQ(plan.paths[0], a);
+}
+
 // Refinement's budget of expansions holds for its group searches too: a search that starts
 // within the budget may run past it only until its next check (a single search: its own limit;
 // a group search: the low-level searches of LA-CBS's root or of one node, a dozen here).

@@ -93,5 +93,29 @@ TEST(SafeIntervalHome, IsTheEarliestArrivalWhenItsTargetIsFreeSoonEnough) {
   EXPECT_EQ(home.path, w.earliest().path);
 }
 
+// Nobody can hold the target before late has left it: the earliest arrival for good is the
+// step after (a move into the target during the step late leaves it would meet late).
+TEST(SafeIntervalHome, ArrivesForGoodNoEarlierThanTheLastPassAllows) {
+  const LatePass w;
+  const SafeIntervalResult earliest = w.earliest();
+  ASSERT_EQ(earliest.outcome, SafeIntervalResult::Outcome::Found);
+  EXPECT_EQ(earliestArrivalForGood(w.space, 0, w.table), w.ready() + 1);
+  EXPECT_EQ(arrival(earliest.path), earliestArrivalForGood(w.space, 0, w.table));
+}
+
+// A search bounded before that arrival finds nothing, and knows it without a single expansion
+// (the states it could wait in before the last pass are many).
+TEST(SafeIntervalHome, ABoundBeforeTheLastPassIsNoPathAtOnce) {
+  const LatePass w;
+  const int bound = earliestArrivalForGood(w.space, 0, w.table);
+  const SafeIntervalResult before =
+      safeIntervalSearch(w.space, 0, w.table, Deadline::in(5.0), 1'000'000, bound - 1);
+  EXPECT_EQ(before.outcome, SafeIntervalResult::Outcome::NoPath);
+  EXPECT_EQ(before.expansions, 0);
+  const SafeIntervalResult at = safeIntervalSearch(w.space, 0, w.table, Deadline::in(5.0), 1'000'000, bound);
+  ASSERT_EQ(at.outcome, SafeIntervalResult::Outcome::Found);
+  EXPECT_EQ(arrival(at.path), bound);
+}
+
 }  // namespace
 }  // namespace fleet_planner::test

@@ -237,6 +237,13 @@ int stepsBetween(const StateGraph& g, StateId s, StateId goal) {
          (p.heading != q.heading ? 1 : 0);
 }
 
+// The earliest arrival within `interval` of a state, for a search from step t0: an interval
+// that begins after t0 follows a step during which the state's body meets someone, and so
+// does every move into it during that step.
+int arrivalFor(const Interval& interval, int t0) {
+  return interval.first > t0 ? interval.first + 1 : interval.first;
+}
+
 // Earliest-arriving collision-free way of agent a from `from` at step t0 to `goal`: held for
 // good (t1 == kNever; `goal` is then a's target; or `hold`: any goal, t1 unused), or reached
 // by step t1 and held until t1, or reached later, by step t1 + max_delay.
@@ -270,8 +277,12 @@ SafeIntervalResult searchBetween(const SearchSpace& space, int a, const SoftPath
   // good (`ready`), if the agent can wait at `from` until then; arrivals bounded by
   // kHomeLeadSteps plus the distance after `ready`.
   int late = t0, late_bound = max_arrival;
-  const PoolRun<Interval> home = wait_first && forever ? sipp.intervals(goal) : PoolRun<Interval>{};
-  if (!home.empty() && home.back().last == kNever) {
+  const PoolRun<Interval> home = forever ? sipp.intervals(goal) : PoolRun<Interval>{};
+  // Held for good, the goal's last safe interval is the only one to arrive in: none if it
+  // never is free for good, or only after max_arrival.
+  if (forever && (home.empty() || home.back().last != kNever || arrivalFor(home.back(), t0) > max_arrival))
+    return result;
+  if (wait_first && home.back().first > t0) {
     const int d = heuristic(from), ready = home.back().first;
     const int depart = ready - 2 * d - kHomeLeadSteps, last = first[first_interval].last;
     if (depart > t0 && (last == kNever || last >= depart)) {
@@ -385,6 +396,13 @@ SafeIntervalResult searchBetween(const SearchSpace& space, int a, const SoftPath
 }
 
 }  // namespace
+
+int earliestArrivalForGood(const SearchSpace& space, int a, const SoftPathTable& others) {
+  MemoryLease lease;
+  Sipp sipp(space, a, others, 0, lease.memory());
+  const PoolRun<Interval> home = sipp.intervals(space.target(a));
+  return home.empty() || home.back().last != kNever ? kNever : arrivalFor(home.back(), 0);
+}
 
 SafeIntervalResult safeIntervalSearch(const SearchSpace& space, int a, const SoftPathTable& others,
                                       const Deadline& deadline, long long max_expansions,

@@ -33,6 +33,11 @@ SafeIntervalResult safeIntervalSearch(const SearchSpace& space, int a, const Sof
                                       int max_arrival = SoftPathTable::kNever,
                                       double weight = 1.0);
 
+/// The earliest step at which agent a could arrive at its target and stay there for good
+/// around `others` (its own path, if there, ignored) and the timed paths of other subproblems,
+/// however far it is: a lower bound on its arrival. SoftPathTable::kNever if it never can.
+int earliestArrivalForGood(const SearchSpace& space, int a, const SoftPathTable& others);
+
 /// A collision-free way of agent a home, held for good, from state `from` at step t0 (the path
 /// holds the states from t0 on). When its target is free for good only from a step `ready`
 /// much later than a could get there, the earliest arrival costs a search of every state it
