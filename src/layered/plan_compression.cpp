@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdlib>
 
 #include "fleet_planner/execution/earliest_schedule.h"
 
@@ -23,7 +24,10 @@ class Compressor {
     // Dropping waits keeps every path's set of states, so the boxes, and the pairs that can
     // meet at all, never change.
     std::vector<Box> boxes;
-    for (int i = 0; i < n; ++i) boxes.push_back(path_steps::boxOf(graphs_.cells(i), paths_[i]));
+    for (int i = 0; i < n; ++i) {
+      boxes.push_back(path_steps::boxOf(graphs_.cells(i), paths_[i]));
+      reach_.push_back(path_steps::radiusOf(graphs_.cells(i)) + model_.step);
+    }
     near_.resize(n);
     for (int i = 0; i < n; ++i) {
       for (int j = 0; j < n; ++j) {
@@ -72,14 +76,19 @@ class Compressor {
 
   /// Robot i following `p` from time t0 on meets no other robot (the states before t0 are
   /// unchanged). At the last time checked both robots are parked, so their final footprints
-  /// are compared too.
+  /// are compared too. A step sweeps cells within the robot's radius plus one move of its
+  /// state, so the steps at which two robots stand farther apart than both are skipped.
   bool fits(int i, const Path& p, int t0) const {
     const FootprintCells& A = graphs_.cells(i);
     for (int j : near_[i]) {
       const Path& q = paths_[j];
       const FootprintCells& B = graphs_.cells(j);
+      const int reach = reach_[i] + reach_[j];
       const int last = std::max(t0, static_cast<int>(std::max(p.size(), q.size())) - 1);
       for (int t = t0; t <= last; ++t) {
+        const GridPose& a = stateAt(p, t);
+        const GridPose& b = stateAt(q, t);
+        if (std::abs(a.x - b.x) > reach || std::abs(a.y - b.y) > reach) continue;
         if (stepsMeet(A, p, t, B, q, t, model_)) return false;
       }
     }
@@ -90,6 +99,7 @@ class Compressor {
   std::vector<Path>& paths_;
   ActionModel model_{};
   std::vector<std::vector<int>> near_;
+  std::vector<int> reach_;  // per robot: its radius plus one move, in cells
 };
 
 }  // namespace
