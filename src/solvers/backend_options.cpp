@@ -57,7 +57,8 @@ void LaLns::configure(const BackendOptionValues& values) {
   bind.integer("parking_robots", o.parking_robots, 1, 100000);
   bind.integer("parking_expansions", o.parking_expansions, 0, kMaxCount);
   bind.number("parking_share", o.parking_share, 0, 1);
-  bind.integer("parking_orders", o.parking_orders, 1, 2);
+  bind.integer("parking_orders", o.parking_orders, 1, 3);
+  bind.number("parking_order_slack", o.parking_order_slack, 1, 100);
   bind.flag("end_game", o.end_game);
   bind.number("end_game_share", o.end_game_share, 0, 1);
   bind.flag("splice", o.splice);

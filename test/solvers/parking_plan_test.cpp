@@ -111,33 +111,89 @@ TEST(ParkingPlan, TakesNoPocketThatARobotParkedForGoodCutsOffFromHome) {
 // of turns cost different expansions. fastestParkingPlan keeps the plan of the order that got
 // everybody home in fewest (ties: the earlier), as the plans made alone in each order show, and
 // gives the same plan and count with one thread or two.
+// Four robots on a corridor with two pockets, planned in two orders.
+World twoOrderWorld() {
+  return World(mapFromRows({"................", "@@@.@@@@@@@@.@@@"}),
+               {dot("a", {0, 0, 0}, {14, 0, 0}), dot("b", {6, 0, 0}, {15, 0, 0}),
+                dot("c", {15, 0, 2}, {1, 0, 2}), dot("d", {10, 0, 2}, {5, 0, 2})});
+}
+
+long long sumOfCosts(const ParkingPlan& plan) {
+  long long c = 0;
+  for (const StatePath& p : plan.paths) c += static_cast<long long>(p.size()) - 1;
+  return c;
+}
+
+// Each order's parking plan made alone, with its expansions.
+struct OrdersAlone {
+  std::vector<ParkingPlan> plans;
+  std::vector<long long> expansions;
+};
+
+OrdersAlone planAlone(const SearchSpace& space, const std::vector<std::vector<int>>& orders) {
+  OrdersAlone r;
+  for (const std::vector<int>& order : orders) {
+    long long e = 0;
+    const auto plan = parkingPlan(space, order, Deadline::in(5.0), ParkingPlanOptions{}, e);
+    EXPECT_TRUE(plan.has_value() && plan->robots_home == space.numAgents());
+    if (!plan) return r;
+    r.plans.push_back(*plan);
+    r.expansions.push_back(e);
+  }
+  return r;
+}
+
 TEST(ParkingPlan, TheFastestOrderIsKeptWhateverTheThreads) {
-  const World w(mapFromRows({"................", "@@@.@@@@@@@@.@@@"}),
-                {dot("a", {0, 0, 0}, {14, 0, 0}), dot("b", {6, 0, 0}, {15, 0, 0}),
-                 dot("c", {15, 0, 2}, {1, 0, 2}), dot("d", {10, 0, 2}, {5, 0, 2})});
+  const World w = twoOrderWorld();
   const Subproblem sub = allRobots(w);
   const SearchSpace space(sub);
   const std::vector<std::vector<int>> orders = {{0, 1, 2, 3}, {3, 2, 1, 0}};
-  std::vector<std::optional<ParkingPlan>> alone;
-  std::vector<long long> cost;
-  int winner = -1;
-  for (std::size_t i = 0; i < orders.size(); ++i) {
-    long long e = 0;
-    alone.push_back(parkingPlan(space, orders[i], Deadline::in(5.0), ParkingPlanOptions{}, e));
-    ASSERT_TRUE(alone.back().has_value());
-    cost.push_back(e);
-    if (alone.back()->robots_home == 4 && (winner < 0 || e < cost[winner])) winner = static_cast<int>(i);
-  }
-  ASSERT_EQ(winner, 1) << "the world no longer tells the orders apart: " << cost[0] << " vs " << cost[1];
+  const OrdersAlone alone = planAlone(space, orders);
+  ASSERT_EQ(alone.plans.size(), 2u);
+  const std::vector<long long>& cost = alone.expansions;
+  ASSERT_LT(cost[1], cost[0]) << "the world no longer tells the orders apart";
+  ParkingPlanOptions options;
+  options.order_slack = 1;
   for (int threads : {1, 2}) {
     long long expansions = 0;
-    const auto plan = fastestParkingPlan(space, orders, Deadline::in(5.0), ParkingPlanOptions{}, threads, expansions);
+    const auto plan = fastestParkingPlan(space, orders, Deadline::in(5.0), options, threads, expansions);
     ASSERT_TRUE(plan.has_value()) << threads << " threads";
-    EXPECT_EQ(plan->order, winner) << threads << " threads";
-    EXPECT_EQ(plan->paths, alone[winner]->paths) << threads << " threads";
-    EXPECT_EQ(expansions, 2 * cost[winner]) << threads << " threads: the other order stops at the winner's count";
+    EXPECT_EQ(plan->order, 1) << threads << " threads";
+    EXPECT_EQ(plan->paths, alone.plans[1].paths) << threads << " threads";
+    EXPECT_EQ(expansions, 2 * cost[1]) << threads << " threads: the other order stops at the winner's count";
     const ValidationResult v = validateStatePaths(w, sub, space, plan->paths);
     EXPECT_TRUE(v.valid()) << violationName(v.violation.kind);
+  }
+}
+
+TEST(ParkingPlan, TheCheapestOrderWithinTheSlackIsKeptWhateverTheThreads) {
+  const World w = twoOrderWorld();
+  const Subproblem sub = allRobots(w);
+  const SearchSpace space(sub);
+  const std::vector<std::vector<int>> orders = {{2, 1, 0, 3}, {2, 3, 1, 0}};
+  const OrdersAlone alone = planAlone(space, orders);
+  ASSERT_EQ(alone.plans.size(), 2u);
+  const std::vector<long long>& cost = alone.expansions;
+  ASSERT_LT(cost[1], cost[0]);
+  ASSERT_LT(sumOfCosts(alone.plans[0]), sumOfCosts(alone.plans[1]))
+      << "the world no longer has the slower order make the cheaper plan";
+  const double needed = static_cast<double>(cost[0]) / static_cast<double>(cost[1]);
+  for (double slack : {needed * 1.01, needed * 0.99}) {
+    ParkingPlanOptions options;
+    options.order_slack = slack;
+    const int kept = slack > needed ? 0 : 1;
+    const long long limit = static_cast<long long>(slack * static_cast<double>(cost[1]));
+    for (int threads : {1, 2}) {
+      long long expansions = 0;
+      const auto plan = fastestParkingPlan(space, orders, Deadline::in(5.0), options, threads, expansions);
+      ASSERT_TRUE(plan.has_value()) << threads << " threads";
+      EXPECT_EQ(plan->order, kept) << "slack " << slack << ", " << threads << " threads";
+      EXPECT_EQ(plan->paths, alone.plans[kept].paths) << threads << " threads";
+      EXPECT_EQ(expansions, cost[1] + std::min(cost[0], limit))
+          << threads << " threads: the slower order stops at the slack's count";
+      const ValidationResult v = validateStatePaths(w, sub, space, plan->paths);
+      EXPECT_TRUE(v.valid()) << violationName(v.violation.kind);
+    }
   }
 }
 

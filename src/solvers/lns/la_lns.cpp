@@ -5,6 +5,7 @@
 #include <numeric>
 
 #include "fleet_planner/solvers/lns/end_game.h"
+#include "fleet_planner/solvers/lns/parking_orders.h"
 #include "fleet_planner/solvers/lns/parking_plan.h"
 #include "fleet_planner/solvers/lns/stage_clearing.h"
 #include "fleet_planner/solvers/registry.h"
@@ -103,16 +104,9 @@ std::optional<SolveResult> LnsSearch::parkFirst(const std::vector<int>& order, s
   o.max_pockets = std::max(1, options_.pockets);
   o.max_expansions = options_.parking_expansions;
   const Deadline deadline = problem_.deadline.within(problem_.deadline.remaining() * options_.parking_share);
-  // Longest first and shortest first, the faster of the two (fastestParkingPlan); one order
-  // when they are the same (every robot as far from home as the others).
-  std::vector<std::vector<int>> orders = {order};
-  if (options_.parking_orders > 1) {
-    std::vector<int> shortest_first = order;
-    std::stable_sort(shortest_first.begin(), shortest_first.end(), [&](int x, int y) {
-      return space_.distance(x, space_.start(x)) < space_.distance(y, space_.start(y));
-    });
-    if (shortest_first != order) orders.push_back(std::move(shortest_first));
-  }
+  o.order_slack = options_.parking_order_slack;
+  // The orders of parking_orders.h, one of them kept (fastestParkingPlan).
+  const std::vector<std::vector<int>> orders = parkingOrders(space_, order, options_.parking_orders);
   const std::optional<ParkingPlan> plan =
       fastestParkingPlan(space_, orders, deadline, o, problem_.threads, stats_.low_level_expansions);
   if (!plan) return std::nullopt;

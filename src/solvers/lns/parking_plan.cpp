@@ -33,11 +33,15 @@ std::optional<ParkingPlan> fastestParkingPlan(const SearchSpace& space,
   std::vector<std::optional<ParkingPlan>> plans(k);
   std::vector<long long> spent(k, 0);
   std::vector<std::exception_ptr> failures(k);
-  // Order i, having spent `used`, ends with more than order j did (or as many, j first).
+  // An order is in the running while it has spent at most `order_slack` times the expansions of
+  // an order that got every agent home.
+  auto reach = [&](long long e) { return static_cast<long long>(options.order_slack * static_cast<double>(e)); };
+  // Order i, having spent `used`, is out of the running (or, without slack, ties with an
+  // earlier order).
   auto beaten = [&](int i, long long used) {
     for (int j = 0; j < k; ++j) {
       const long long e = j == i ? kNotHome : home[j].load();
-      if (e != kNotHome && (used > e || (used == e && j < i))) return true;
+      if (e != kNotHome && (used > reach(e) || (used == e && j < i && reach(e) == e))) return true;
     }
     return false;
   };
@@ -90,15 +94,30 @@ std::optional<ParkingPlan> fastestParkingPlan(const SearchSpace& space,
       }
     }
   }
-  int best = -1;
+  int fastest = -1;
   for (int i = 0; i < k; ++i) {
-    if (home[i] != kNotHome && (best < 0 || home[i] < home[best])) best = i;
+    if (home[i] != kNotHome && (fastest < 0 || home[i] < home[fastest])) fastest = i;
   }
-  if (best < 0) {  // nobody gave way: every order ran its course
+  if (fastest < 0) {  // nobody gave way: every order ran its course
     for (int i = 0; i < k; ++i) expansions += spent[i];
     return plans[0];
   }
-  for (int i = 0; i < k; ++i) expansions += std::min(spent[i], home[best].load());
+  // Of the orders home within the slack of the fastest (whatever the threads: an order within
+  // it never gives way), the plan of least sum of costs; ties: fewer expansions, then the
+  // earlier order.
+  const long long limit = reach(home[fastest].load());
+  auto soc = [&](int i) {
+    long long c = 0;
+    for (const StatePath& p : plans[i]->paths) c += static_cast<long long>(p.size()) - 1;
+    return c;
+  };
+  int best = fastest;
+  for (int i = 0; i < k; ++i) {
+    if (i == fastest || home[i] == kNotHome || home[i] > limit) continue;
+    const long long a = soc(i), b = soc(best);
+    if (a < b || (a == b && (home[i] < home[best] || (home[i] == home[best] && i < best)))) best = i;
+  }
+  for (int i = 0; i < k; ++i) expansions += std::min(spent[i], limit);
   plans[best]->order = best;
   return plans[best];
 }

@@ -41,6 +41,10 @@ struct ParkingPlanOptions {
   /// A robot to push that has no pocket it can reach has the robots on its way to one pushed
   /// first, up to this many times over.
   int push_depth = 4;
+  /// fastestParkingPlan: orders that get every agent home within this factor of the fastest
+  /// order's expansions stay in the running, and the cheapest of their plans is kept (1: the
+  /// fastest order's plan).
+  double order_slack = 1;
 };
 
 struct ParkingPlan {
@@ -60,14 +64,15 @@ std::optional<ParkingPlan> parkingPlan(const SearchSpace& space, const std::vect
                                        const Deadline& deadline, const ParkingPlanOptions& options,
                                        long long& expansions);
 
-/// Parking plans of the same agents in several orders: the plan of the order that gets every
-/// agent home in the fewest expansions (ties: the earlier order), else the first order's. No
-/// order of turns suits every fleet (robots that go a long way first make room for the others
-/// in one fleet and block it in the next), and which one does cannot be told beforehand. An
-/// order gives way as soon as another has got every agent home in fewer expansions: it cannot
-/// win. The orders run `threads` at a time; the answer (and the expansions added: the
-/// winner's, and for each other order those it spent up to the winner's count) does not
-/// depend on `threads`.
+/// Parking plans of the same agents in several orders: of the orders that get every agent
+/// home within `order_slack` times the expansions of the fastest, the plan of least sum of
+/// costs (ties: fewer expansions, then the earlier order); else the first order's. No order of
+/// turns suits every fleet (robots that go a long way first make room for the others in one
+/// fleet and block it in the next), and which one does cannot be told beforehand; an order
+/// that pushes fewer robots aside tends to end both sooner and cheaper, but not always. An
+/// order gives way as soon as it has spent more than the slack allows: it cannot win. The
+/// orders run `threads` at a time; the answer (and the expansions added: for each order those
+/// it spent up to the slack's count) does not depend on `threads`.
 std::optional<ParkingPlan> fastestParkingPlan(const SearchSpace& space,
                                               const std::vector<std::vector<int>>& orders,
                                               const Deadline& deadline,

@@ -1,0 +1,30 @@
+#pragma once
+/// The orders in which LA-LNS's parking plan (parking_plan.h) drives the robots of a packed
+/// subproblem home. No order of turns suits every fleet, and which one does cannot be told
+/// beforehand, so several are made and fastestParkingPlan keeps one:
+///   1. longest way first (the order given): robots that go a long way make room early;
+///   2. shortest way first: robots near home are out of the way soon;
+///   3. robots whose targets lie on fewest other robots' ways first (ties: shortest way
+///      first): a robot parked on a target that others must cross is pushed off it again, and
+///      each push makes its path longer; those robots go last.
+#include <vector>
+
+#include "fleet_planner/solvers/search/agent_conflicts.h"
+#include "fleet_planner/solvers/search/search_space.h"
+
+namespace fleet_planner {
+
+/// Agent a's way home alone, down its distance table from its start (among the static
+/// obstacles only; the first action in enum order at each step); empty if unreachable.
+StatePath shortestWay(const SearchSpace& space, int a);
+
+/// For each agent, how many other agents' `ways` (a path per agent, empty: none) cover a cell
+/// of its footprint at its target at some state along them.
+std::vector<int> targetsCrossed(const SearchSpace& space, const std::vector<StatePath>& ways);
+
+/// The first `count` of the orders above (1-3), orders equal to an earlier one left out; the
+/// ways of order 3 are the agents' shortestWay.
+std::vector<std::vector<int>> parkingOrders(const SearchSpace& space, const std::vector<int>& longest_first,
+                                            int count);
+
+}  // namespace fleet_planner
