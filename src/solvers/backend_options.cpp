@@ -22,6 +22,7 @@ void LaCbs::configure(const BackendOptionValues& values) {
   bind.integer("max_low_level_nodes", o.max_low_level_nodes, 1, kMaxCount);
   bind.integer("conflict_aware_nodes", o.conflict_aware_nodes, 0, kMaxCount);
   bind.number("max_memory_mb", o.max_memory_mb, 1, 1e7);
+  bind.number("suboptimality", o.suboptimality, 1, 10);
   bind.finish();
   options_ = o;
 }

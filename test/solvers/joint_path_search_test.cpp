@@ -14,6 +14,7 @@
 #include "fleet_planner/solvers/search/solve_common.h"
 #include "solver_test_util.h"
 #include "test_maps.h"
+#include "tiny_worlds.h"
 
 namespace fleet_planner::test {
 namespace {
@@ -42,32 +43,6 @@ JointSearchResult searchAll(const Subproblem& sub) {
   if (!v.valid()) return ::testing::AssertionFailure() << v.violation.message;
   soc = planMetrics(plan, w.targets()).soc;
   return ::testing::AssertionSuccess();
-}
-
-// A random map of at most 20 cells (12 for three robots) with a few walls and 2-3 dots and bars at random poses; the
-// World constructor rejects overlapping or illegal poses, and such draws are drawn again.
-std::unique_ptr<World> randomTinyWorld(Rng& rng, int robots) {
-  const int cells = robots == 2 ? 20 : 12;
-  for (;;) {
-    const int width = static_cast<int>(rng.uniformInt(3, 5));
-    const int height = static_cast<int>(rng.uniformInt(2, cells / width));
-    std::vector<std::string> rows(height, std::string(width, '.'));
-    for (int k = static_cast<int>(rng.uniformInt(0, 3)); k > 0; --k)
-      rows[rng.uniformInt(0, height - 1)][rng.uniformInt(0, width - 1)] = '@';
-    auto pose = [&] {
-      return GridPose{static_cast<int>(rng.uniformInt(0, width - 1)), static_cast<int>(rng.uniformInt(0, height - 1)),
-                      static_cast<int>(rng.uniformInt(0, 3))};
-    };
-    std::vector<Robot> fleet;
-    for (int i = 0; i < robots; ++i) {
-      const std::string id = "r" + std::to_string(i);
-      fleet.push_back(rng.uniformInt(0, 3) == 0 ? bar(id, pose(), pose()) : dot(id, pose(), pose()));
-    }
-    try {
-      return std::make_unique<World>(mapFromRows(rows), fleet);
-    } catch (const InvalidInput&) {
-    }
-  }
 }
 
 // With nothing outside the group, the search is an optimal joint search: it finds a plan exactly

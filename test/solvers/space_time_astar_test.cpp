@@ -105,5 +105,96 @@ TEST(SpaceTimeAStar, AreaBoundsNeverChangeTheCost) {
   std::cout << "[ areas     ] " << found << " paths, " << none << " without\n";
 }
 
+// Two ways from (1, 3) to (19, 3): straight along row 3 (18 steps) or round by row 1 (26: four
+// turns and four more moves). Row 3's cells from x = 5 to 15 conflict with somebody's path.
+World twoWays() {
+  return World(mapFromRows({std::string(21, '@'), "@" + std::string(19, '.') + "@",
+                            "@." + std::string(17, '@') + ".@", "@" + std::string(19, '.') + "@", std::string(21, '@')}),
+               {makeRobot("r", Footprint::circle(0.4), {1, 3, 0}, {19, 3, 0})});
+}
+
+int pathConflicts(const SearchSpace& space, const LowLevelResult& r, const LowLevelOptions& o) {
+  int count = 0;
+  for (std::size_t t = 0; t + 1 < r.path.size(); ++t)
+    count += o.conflicts(r.path[t], stepAction(space.graph(0), r.path[t], r.path[t + 1]), static_cast<int>(t));
+  return count;
+}
+
+TEST(SpaceTimeAStar, FocalSearchTakesTheConflictFreeWayWithinItsWeight) {
+  const World w = twoWays();
+  const Subproblem sub = allRobots(w);
+  const SearchSpace space(sub);
+  LowLevelOptions o;
+  o.conflicts = [&](StateId s, Action, int) {
+    const GridPose p = space.graph(0).pose(s);
+    return p.y == 3 && p.x >= 5 && p.x <= 15 ? 1 : 0;
+  };
+  const LowLevelResult straight = spaceTimeAStar(space, 0, {}, sub.deadline, o);
+  ASSERT_EQ(straight.outcome, LowLevelResult::Outcome::Found);
+  EXPECT_EQ(straight.path.size(), 19u);
+  EXPECT_EQ(straight.lower_bound, 18);
+  EXPECT_GT(pathConflicts(space, straight, o), 0);
+  // 26 <= 1.5 x 18: round by row 1, without conflicts; the least open f then was the optimum.
+  o.focal_weight = 1.5;
+  const LowLevelResult round = spaceTimeAStar(space, 0, {}, sub.deadline, o);
+  ASSERT_EQ(round.outcome, LowLevelResult::Outcome::Found);
+  EXPECT_EQ(round.path.size(), 27u);
+  EXPECT_EQ(pathConflicts(space, round, o), 0);
+  EXPECT_EQ(round.lower_bound, 18);
+  // 26 > 1.2 x 18: straight again.
+  o.focal_weight = 1.2;
+  const LowLevelResult tight = spaceTimeAStar(space, 0, {}, sub.deadline, o);
+  ASSERT_EQ(tight.outcome, LowLevelResult::Outcome::Found);
+  EXPECT_EQ(tight.path.size(), 19u);
+}
+
+// On random rooms under random cell constraints and random conflicts, a focal search finds a
+// path exactly when A* does, at most the weight times as long, with a lower bound at most the
+// optimum and at least its own cost over the weight.
+TEST(SpaceTimeAStar, FocalSearchStaysWithinItsWeight) {
+  int found = 0, longer = 0;
+  for (std::uint64_t seed = 1; seed <= 300; ++seed) {
+    Rng rng(seed);
+    std::vector<std::string> rows(9, std::string(12, '.'));
+    for (int k = 0; k < 14; ++k) rows[rng.uniformInt(0, 8)][rng.uniformInt(0, 11)] = '@';
+    const GridPose start{static_cast<int>(rng.uniformInt(0, 11)), static_cast<int>(rng.uniformInt(0, 8)), 0};
+    const GridPose target{static_cast<int>(rng.uniformInt(0, 11)), static_cast<int>(rng.uniformInt(0, 8)),
+                          static_cast<int>(rng.uniformInt(0, 3))};
+    rows[start.y][start.x] = rows[target.y][target.x] = '.';
+    if (start.x == target.x && start.y == target.y) continue;
+    const World w(mapFromRows(rows), {makeRobot("r", Footprint::circle(0.4), start, target)});
+    const Subproblem sub = allRobots(w);
+    const SearchSpace space(sub);
+    if (space.distance(0, space.start(0)) < 0) continue;
+    AgentConstraints c;
+    for (int k = 0; k < 8; ++k)
+      c.forbidCellAt({static_cast<int>(rng.uniformInt(0, 11)), static_cast<int>(rng.uniformInt(0, 8))},
+                     static_cast<int>(rng.uniformInt(1, 30)));
+    std::vector<char> busy(12 * 9 * 40);
+    for (char& b : busy) b = rng.uniformInt(0, 2) == 0;
+    LowLevelOptions o;
+    o.conflicts = [&](StateId s, Action, int t) {
+      const GridPose p = space.graph(0).pose(s);
+      return static_cast<int>(busy[(std::min(t, 39) * 9 + p.y) * 12 + p.x]);
+    };
+    const LowLevelResult exact = spaceTimeAStar(space, 0, c, sub.deadline, o);
+    o.focal_weight = 1.5;
+    const LowLevelResult focal = spaceTimeAStar(space, 0, c, sub.deadline, o);
+    ASSERT_EQ(exact.outcome, focal.outcome) << "seed " << seed;
+    if (exact.outcome != LowLevelResult::Outcome::Found) continue;
+    const int best = static_cast<int>(exact.path.size()) - 1, cost = static_cast<int>(focal.path.size()) - 1;
+    EXPECT_EQ(focal.path.front(), space.start(0));
+    EXPECT_EQ(focal.path.back(), space.target(0));
+    EXPECT_LE(cost, 1.5 * best) << "seed " << seed;
+    EXPECT_LE(focal.lower_bound, best) << "seed " << seed;
+    EXPECT_LE(cost, 1.5 * focal.lower_bound) << "seed " << seed;
+    longer += cost > best;
+    ++found;
+  }
+  EXPECT_GE(found, 150);
+  EXPECT_GE(longer, 10);
+  std::cout << "[ focal     ] " << found << " paths, " << longer << " longer than the optimum\n";
+}
+
 }  // namespace
 }  // namespace fleet_planner::test

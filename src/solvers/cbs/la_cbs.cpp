@@ -14,6 +14,7 @@
 #include "fleet_planner/solvers/registry.h"
 #include "fleet_planner/solvers/search/solve_common.h"
 #include "fleet_planner/solvers/search/space_time_astar.h"
+#include "tree_frontier.h"
 
 namespace fleet_planner {
 
@@ -26,8 +27,11 @@ struct CtNode {
   int parent = -1;
   std::vector<CbsConstraint> constraints;
   std::vector<std::pair<int, StatePath>> paths;
+  std::vector<int> path_bounds;  // per entry of `paths`: a lower bound on that agent's cost
   long long cost = 0;
-  long long f = 0;  // cost + the pairwise delay heuristic: a lower bound on any plan below
+  long long bound_sum = 0;  // the agents' lower bounds (their costs unless the search is focal)
+  // A lower bound on any plan below: bound_sum + the pairwise delay heuristic.
+  long long f = 0;
   int conflicts = 0;
 };
 
@@ -65,37 +69,42 @@ class CbsSearch {
     SolveResult result;
     CtNode root;
     std::vector<StatePath> paths(n_);
+    std::vector<int> bounds(n_, 0);
     for (const int a : active_) {
       const AgentConstraints none;
       LowLevelResult ll = lowLevel(a, none, paths);
       if (ll.outcome != LowLevelResult::Outcome::Found) return lowLevelFailure(a, ll, true);
       paths[a] = std::move(ll.path);
+      bounds[a] = ll.lower_bound;
     }
     for (const int a : active_) {
       root.cost += pathCost(paths[a]);
+      root.bound_sum += bounds[a];
       root.paths.emplace_back(a, paths[a]);
+      root.path_bounds.push_back(bounds[a]);
     }
     root.conflicts = countConflicts(space_, paths);
-    if (!boundNode(root, paths)) return stopped();
+    if (!boundNode(root, paths, bounds)) return stopped();
     push(std::move(root));
 
-    while (!open_.empty()) {
+    for (;;) {
       if (problem_.deadline.expired()) return stopped();
-      const int id = open_.top();
-      lower_bound_ = std::max(lower_bound_, nodes_[id].f);
+      const int id = open_.pop();
+      if (id < 0) break;
+      lower_bound_ = std::max(lower_bound_, open_.leastF());
       if (max_nodes_ >= 0 &&
           (stats_.high_level_nodes >= max_nodes_ || stats_.low_level_expansions >= max_expansions_)) {
         return failure(SolveStatus::Timeout, "constraint tree reached its node limit");
       }
-      open_.pop();
       ++stats_.high_level_nodes;
-      std::vector<StatePath> current = pathsOf(id);
+      std::vector<int> bounds;
+      std::vector<StatePath> current = pathsOf(id, bounds);
       std::optional<EvaluatedSplit> chosen;
       while (!chosen) {  // bypass may adopt paths and look again at the same node
         const std::vector<AgentConflict> earliest =
             earliestConflictPerPair(space_, current, std::max(1, options_.max_candidate_conflicts));
         if (earliest.empty()) {
-          lower_bound_ = nodes_[id].cost;
+          if (!focal()) lower_bound_ = nodes_[id].cost;
           return success(current);
         }
         const AgentConflict& first = earliest.front();
@@ -114,7 +123,7 @@ class CbsSearch {
         bool adopted = false;
         for (const AgentConflict& conflict : candidates) {
           EvaluatedSplit split;
-          const Outcome outcome = evaluate(id, current, conflict, split);
+          const Outcome outcome = evaluate(id, current, bounds, conflict, split);
           if (outcome == Outcome::Expired) return stopped();
           if (outcome == Outcome::Adopted) {
             adopted = true;
@@ -148,7 +157,8 @@ class CbsSearch {
   // Plans both branches of `conflict` at node `id` (whose paths are `current`) into `split`.
   // Bypass (Boyarski et al. 2015): a child path that costs the same and conflicts less is
   // adopted by the node itself (it satisfies a superset of the node's constraints): Adopted.
-  Outcome evaluate(int id, std::vector<StatePath>& current, const AgentConflict& conflict, EvaluatedSplit& split) {
+  Outcome evaluate(int id, std::vector<StatePath>& current, const std::vector<int>& bounds,
+                   const AgentConflict& conflict, EvaluatedSplit& split) {
     for (CbsBranch& branch : splitConflict(space_, current, conflict)) {
       const int agent = branch.replan;
       AgentConstraints constraints = constraintsOf(id, agent);
@@ -168,26 +178,35 @@ class CbsSearch {
       child.parent = id;
       child.constraints = std::move(branch.constraints);
       child.cost = nodes_[id].cost - pathCost(old) + pathCost(ll.path);
+      // More constraints: the agent's bound cannot fall below the node's.
+      const int child_bound = std::max(bounds[agent], ll.lower_bound);
+      child.bound_sum = nodes_[id].bound_sum - bounds[agent] + child_bound;
       child.conflicts = countConflicts(space_, current);
       child.f = nodes_[id].f;  // a subtree of the node's: its bound holds
-      if (!boundNode(child, current)) return Outcome::Expired;
+      std::vector<int> child_bounds = bounds;
+      child_bounds[agent] = child_bound;
+      if (!boundNode(child, current, child_bounds)) return Outcome::Expired;
       if (options_.bypass && child.cost == nodes_[id].cost && child.conflicts < nodes_[id].conflicts) {
-        replacePath(nodes_[id], agent, ll.path);
+        replacePath(nodes_[id], agent, ll.path, bounds[agent]);  // the node's bound still holds
         nodes_[id].conflicts = child.conflicts;
         return Outcome::Adopted;
       }
       current[agent] = std::move(old);
       if (child.cost > nodes_[id].cost) ++split.raising;
       child.paths.emplace_back(agent, std::move(ll.path));
+      child.path_bounds.push_back(child_bound);
       split.children.push_back(std::move(child));
     }
     return Outcome::Evaluated;
   }
 
-  // Raises node.f to node.cost plus the pairwise delay heuristic of `paths` (the node's), first
-  // bounding the pairs that conflict in them and have no bound yet. False if the deadline came.
-  bool boundNode(CtNode& node, const std::vector<StatePath>& paths) {
-    node.f = std::max(node.f, node.cost);
+  // Raises node.f to the agents' lower bounds (`bounds`: their costs unless focal) plus the
+  // pairwise delay heuristic on them, first bounding the pairs that conflict in `paths` (the
+  // node's) and have no bound yet; the pairs' searches are optimal. The heuristic holds on lower
+  // bounds as on costs: agents that together need B cost at least B in any plan below.
+  // False if the deadline came.
+  bool boundNode(CtNode& node, const std::vector<StatePath>& paths, const std::vector<int>& bounds) {
+    node.f = std::max(node.f, node.bound_sum);
     if (!pairs_) return true;
     for (const auto& [i, j] : conflictingPairs(space_, paths)) {
       if (pairs_->known(i, j)) continue;
@@ -195,7 +214,7 @@ class CbsSearch {
       const long long allowance = stats_.low_level_expansions - 2 * pair_expansions_ +
                                   options_.pairwise_delay_expansions;
       if (allowance <= 0) break;  // bounded later, if the tree gets that far
-      CbsSearch pair(space_, problem_, options_, i, j, options_.pairwise_delay_nodes, allowance);
+      CbsSearch pair(space_, problem_, pair_options_, i, j, options_.pairwise_delay_nodes, allowance);
       const SolveResult r = pair.run();
       stats_.low_level_expansions += pair.stats().low_level_expansions;
       pair_expansions_ += pair.stats().low_level_expansions;
@@ -204,10 +223,16 @@ class CbsSearch {
       if (!pair.hitLimit()) pairs_->set(i, j, pair.lowerBound());
       else pairs_->set(i, j, 0);
     }
-    std::vector<int> costs(n_, 0);
-    for (const int a : active_) costs[a] = pathCost(paths[a]);
-    node.f = std::max(node.f, node.cost + pairs_->heuristic(costs));
+    std::vector<int> least(n_, 0);
+    for (const int a : active_) least[a] = bounds[a];
+    node.f = std::max(node.f, node.bound_sum + pairs_->heuristic(least));
     return true;
+  }
+
+  bool focal() const { return options_.suboptimality > 1.0; }
+  static LaCbsOptions optimal(LaCbsOptions o) {
+    o.suboptimality = 1.0;
+    return o;
   }
 
   LowLevelResult lowLevel(int agent, const AgentConstraints& constraints, const std::vector<StatePath>& others) {
@@ -215,6 +240,13 @@ class CbsSearch {
     o.max_nodes = std::min(options_.max_low_level_nodes, options_.conflict_aware_nodes);
     const ConflictAvoidanceTable cat(space_, others, agent);
     o.conflicts = [&cat](StateId s, Action act, int t) { return cat.conflicts(s, act, t); };
+    if (focal()) {  // ECBS's low level: fewest conflicts within the weight, no second search
+      o.max_nodes = options_.max_low_level_nodes;
+      o.focal_weight = options_.suboptimality;
+      LowLevelResult ll = spaceTimeAStar(space_, agent, constraints, problem_.deadline, o);
+      stats_.low_level_expansions += ll.expansions;
+      return ll;
+    }
     LowLevelResult ll = spaceTimeAStar(space_, agent, constraints, problem_.deadline, o);
     stats_.low_level_expansions += ll.expansions;
     if (ll.outcome == LowLevelResult::Outcome::NodeLimit && o.max_nodes < options_.max_low_level_nodes) {
@@ -236,13 +268,17 @@ class CbsSearch {
     return constraints;
   }
 
-  std::vector<StatePath> pathsOf(int id) const {
+  // The paths of node `id` and, into `bounds`, the lower bounds on their costs.
+  std::vector<StatePath> pathsOf(int id, std::vector<int>& bounds) const {
     std::vector<StatePath> paths(n_);
+    bounds.assign(n_, 0);
     std::vector<bool> have(n_, false);
     for (int i = id; i >= 0; i = nodes_[i].parent) {
-      for (const auto& [agent, path] : nodes_[i].paths) {
+      for (std::size_t k = 0; k < nodes_[i].paths.size(); ++k) {
+        const auto& [agent, path] = nodes_[i].paths[k];
         if (!have[agent]) {
           paths[agent] = path;
+          bounds[agent] = nodes_[i].path_bounds[k];
           have[agent] = true;
         }
       }
@@ -250,16 +286,19 @@ class CbsSearch {
     return paths;
   }
 
-  void replacePath(CtNode& node, int agent, const StatePath& path) {
-    for (auto& [a, p] : node.paths) {
+  void replacePath(CtNode& node, int agent, const StatePath& path, int bound) {
+    for (std::size_t k = 0; k < node.paths.size(); ++k) {
+      auto& [a, p] = node.paths[k];
       if (a == agent) {
         stored_states_ += static_cast<long long>(path.size()) - static_cast<long long>(p.size());
         p = path;
+        node.path_bounds[k] = bound;
         return;
       }
     }
     stored_states_ += static_cast<long long>(path.size());
     node.paths.emplace_back(agent, path);
+    node.path_bounds.push_back(bound);
   }
 
   void push(CtNode node) {
@@ -300,20 +339,10 @@ class CbsSearch {
     }
   }
 
-  struct Worse {
-    const std::vector<CtNode>* nodes;
-    bool operator()(int x, int y) const {
-      const CtNode &a = (*nodes)[x], &b = (*nodes)[y];
-      if (a.f != b.f) return a.f > b.f;
-      if (a.conflicts != b.conflicts) return a.conflicts > b.conflicts;
-      if (a.cost != b.cost) return a.cost > b.cost;
-      return x > y;
-    }
-  };
-
   const SearchSpace& space_;
   const Subproblem& problem_;
   const LaCbsOptions& options_;
+  const LaCbsOptions pair_options_ = optimal(options_);  // the pair bounds' searches
   const int n_;
   std::vector<int> active_;                 // the agents searched; the others have empty paths
   std::optional<PairwiseDelayBound> pairs_;  // top-level search only
@@ -322,7 +351,7 @@ class CbsSearch {
   long long pair_expansions_ = 0;            // spent on pair bounds (also in stats_)
   long long lower_bound_ = 0;
   std::vector<CtNode> nodes_;
-  std::priority_queue<int, std::vector<int>, Worse> open_{Worse{&nodes_}};
+  TreeFrontier<CtNode> open_{nodes_, options_.suboptimality};
   SolveStats stats_;
   long long stored_states_ = 0;
   bool hit_limit_ = false;

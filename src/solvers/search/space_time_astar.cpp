@@ -83,6 +83,77 @@ struct Node {
   int parent;
 };
 
+// The open list. Weight 1: best-first by f, then fewer conflicts, deeper, first generated.
+// Weight w > 1 (focal search): among the nodes whose f is at most w times the least open f,
+// fewest conflicts first, then f, deeper, first generated. `dead(i)` tells a node superseded
+// by a cheaper duplicate; the focal list also skips the nodes it has handed out.
+class Frontier {
+ public:
+  Frontier(const std::vector<Node>& nodes, double weight)
+      : weight_(weight), by_f_(ByF{&nodes}), pending_(ByF{&nodes}), focal_(ByConflicts{&nodes}), nodes_(nodes) {}
+
+  void push(int i) {
+    by_f_.push(i);
+    if (weight_ > 1.0) pending_.push(i);
+  }
+
+  /// The next node to expand, or -1 when none is left.
+  template <class Dead>
+  int pop(Dead dead) {
+    if (weight_ <= 1.0) {
+      if (by_f_.empty()) return -1;
+      const int i = by_f_.top();
+      by_f_.pop();
+      least_f_ = nodes_[i].f;
+      return i;
+    }
+    auto gone = [&](int i) { return (static_cast<std::size_t>(i) < taken_.size() && taken_[i]) || dead(i); };
+    while (!by_f_.empty() && gone(by_f_.top())) by_f_.pop();
+    if (by_f_.empty()) return -1;
+    least_f_ = nodes_[by_f_.top()].f;
+    const double bound = weight_ * least_f_;
+    while (!pending_.empty() && nodes_[pending_.top()].f <= bound) {
+      focal_.push(pending_.top());
+      pending_.pop();
+    }
+    while (gone(focal_.top())) focal_.pop();  // never empties: the least-f node is in it
+    const int i = focal_.top();
+    focal_.pop();
+    if (taken_.size() <= static_cast<std::size_t>(i)) taken_.resize(nodes_.size(), 0);
+    taken_[i] = 1;
+    return i;
+  }
+
+  /// The least f of the open nodes when the last node was handed out: a lower bound on the cost.
+  int leastF() const { return least_f_; }
+
+ private:
+  struct ByF {
+    const std::vector<Node>* nodes;
+    bool operator()(int x, int y) const {
+      const Node &a = (*nodes)[x], &b = (*nodes)[y];
+      if (a.f != b.f) return a.f > b.f;
+      if (a.conflicts != b.conflicts) return a.conflicts > b.conflicts;
+      if (a.g != b.g) return a.g < b.g;  // deeper first
+      return x > y;                      // then first generated: deterministic
+    }
+  };
+  struct ByConflicts {
+    const std::vector<Node>* nodes;
+    bool operator()(int x, int y) const {
+      const Node &a = (*nodes)[x], &b = (*nodes)[y];
+      if (a.conflicts != b.conflicts) return a.conflicts > b.conflicts;
+      return ByF{nodes}(x, y);
+    }
+  };
+  double weight_;
+  std::priority_queue<int, std::vector<int>, ByF> by_f_, pending_;
+  std::priority_queue<int, std::vector<int>, ByConflicts> focal_;
+  std::vector<char> taken_;
+  const std::vector<Node>& nodes_;
+  int least_f_ = 0;
+};
+
 }  // namespace
 
 LowLevelResult spaceTimeAStar(const SearchSpace& space, int a, const AgentConstraints& constraints,
@@ -120,14 +191,11 @@ LowLevelResult spaceTimeAStar(const SearchSpace& space, int a, const AgentConstr
     return (static_cast<std::uint64_t>(t) << 33) | (static_cast<std::uint64_t>(held) << 32) |
            static_cast<std::uint32_t>(s);
   };
-  auto worse = [&nodes](int x, int y) {
-    const Node &a1 = nodes[x], &b1 = nodes[y];
-    if (a1.f != b1.f) return a1.f > b1.f;
-    if (a1.conflicts != b1.conflicts) return a1.conflicts > b1.conflicts;
-    if (a1.g != b1.g) return a1.g < b1.g;  // deeper first
-    return x > y;                          // then first generated: deterministic
+  Frontier open(nodes, options.focal_weight);
+  auto superseded = [&](int i) {
+    const Node& n = nodes[i];
+    return *seen.find(key(n.s, n.t, n.held)) != i;
   };
-  std::priority_queue<int, std::vector<int>, decltype(worse)> open(worse);
 
   if (constraints.poseForbidden(cells, g.pose(start), 0)) return result;
   // Heuristic: the distance, but never less than the time left until the target can be held
@@ -141,15 +209,15 @@ LowLevelResult spaceTimeAStar(const SearchSpace& space, int a, const AgentConstr
   seen.set(key(start, 0, false), 0);
   open.push(0);
 
-  while (!open.empty()) {
+  for (;;) {
     if ((result.expansions & 255) == 0 && deadline.expired()) {
       result.outcome = LowLevelResult::Outcome::Expired;
       return result;
     }
-    const int index = open.top();
-    open.pop();
+    const int index = open.pop(superseded);
+    if (index < 0) break;
     const Node node = nodes[index];
-    if (*seen.find(key(node.s, node.t, node.held)) != index) continue;  // superseded by a cheaper duplicate
+    if (superseded(index)) continue;  // by a cheaper duplicate
     if (bounds && !bounds->alive(node.s, node.g)) continue;
     ++result.expansions;
     if (!bounds && constraints.hasAreas() && result.expansions > options.area_bounds_after) {
@@ -173,6 +241,7 @@ LowLevelResult spaceTimeAStar(const SearchSpace& space, int a, const AgentConstr
     if (node.s == target && !node.held && node.g >= goal_earliest) {
       for (int i = index; i >= 0; i = nodes[i].parent) result.path.push_back(nodes[i].s);
       std::reverse(result.path.begin(), result.path.end());
+      result.lower_bound = std::min(node.g, open.leastF());
       result.outcome = LowLevelResult::Outcome::Found;
       return result;
     }

@@ -27,7 +27,8 @@
 /// (transfer conflict), which splits soundly because any two poses covering one cell conflict.
 /// Bypass adopts a child's path instead of branching when it costs the same and conflicts less.
 /// Low level: space-time A* with the exact distance heuristic, tie-broken by conflicts with the
-/// other agents' paths. Optimal sum of costs when it succeeds.
+/// other agents' paths. Optimal sum of costs when it succeeds (bounded-suboptimal with
+/// `suboptimality` above 1).
 ///
 /// Statistics: high_level_nodes counts the main tree's expansions; low_level_expansions also
 /// counts the low-level work of the pair bounds.
@@ -60,6 +61,12 @@ struct LaCbsOptions {
   long long max_high_level_nodes = -1;
   /// Low-level expansions in all (checked between constraint-tree expansions; -1: no limit).
   long long max_total_expansions = -1;
+  /// Above 1: ECBS (Barer, Sharon, Stern, Felner, SoCS 2014) with this weight w. Each low-level
+  /// search is focal (fewest conflicts with the other paths among costs within w of the least
+  /// possible) and the tree expands, among the nodes costing at most w times the least lower
+  /// bound, the one with fewest conflicts. The plan costs at most w times the optimum; the
+  /// pairwise delay heuristic bounds the robots' lower bounds instead of their costs. 1: optimal.
+  double suboptimality = 1.0;
 };
 
 class LaCbs : public Solver {

@@ -24,6 +24,11 @@ struct LowLevelOptions {
   /// Tie-breaker among equal f: number of conflicts of doing `action` from `s` at step t with
   /// the other agents' current paths (fewer first). May be empty.
   std::function<int(StateId s, Action action, int t)> conflicts;
+  /// Above 1: a focal search (Pearl and Kim 1982; ECBS's low level, Barer et al. 2014): among
+  /// the open nodes whose f is at most this weight times the least open f, fewest `conflicts`
+  /// first. The path found costs at most the weight times the optimum, and the result's
+  /// lower_bound is the least open f when it was found.
+  double focal_weight = 1.0;
 };
 
 struct LowLevelResult {
@@ -31,6 +36,9 @@ struct LowLevelResult {
   Outcome outcome = Outcome::NoPath;
   std::vector<StateId> path;  ///< states at t = 0, 1, ..., ending at the target
   long long expansions = 0;
+  /// Found: a lower bound on the cost of any path under the constraints (the path's cost
+  /// unless the search was focal).
+  int lower_bound = 0;
 };
 
 /// Cheapest path for agent `a` from its start to its target that it can hold forever after,
