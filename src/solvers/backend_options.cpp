@@ -23,6 +23,7 @@ void LaCbs::configure(const BackendOptionValues& values) {
   bind.integer("conflict_aware_nodes", o.conflict_aware_nodes, 0, kMaxCount);
   bind.number("max_memory_mb", o.max_memory_mb, 1, 1e7);
   bind.number("suboptimality", o.suboptimality, 1, 10);
+  bind.flag("around_others", o.around_others);
   bind.finish();
   options_ = o;
 }

@@ -49,6 +49,28 @@ TEST(LaCbsFocal, WithinTheWeightOfTheOptimumOnRandomTinyInstances) {
             << " without a plan\n";
 }
 
+// With a weight just above 1 (and costs below 100) the answer is optimal: neither the focal
+// searches nor a plan made by planning one robot around the others' paths may cost more.
+TEST(LaCbsFocal, AWeightNearOneKeepsTheOptimum) {
+  Rng rng(31);
+  int solved = 0;
+  for (int round = 0; round < 60; ++round) {
+    const std::unique_ptr<World> w = randomTinyWorld(rng, round % 3 == 0 ? 3 : 2);
+    const ExhaustiveResult best = exhaustiveSearch(w->map, w->instance, 4'000'000);
+    if (best.budget_exhausted || best.soc < 0 || best.soc >= 100) continue;
+    LaCbsOptions options;
+    options.suboptimality = 1.0 + 1.0 / 128;
+    options.max_high_level_nodes = 200'000;
+    LaCbs solver(options);
+    const Outcome o = solveWith(solver, *w, allRobots(*w, 600.0));
+    SCOPED_TRACE("round " + std::to_string(round));
+    ASSERT_TRUE(solvedValidly(o)) << describe(o);
+    EXPECT_EQ(o.soc, best.soc);
+    ++solved;
+  }
+  EXPECT_GT(solved, 20);
+}
+
 // Two rooms joined by a one-cell corridor; a's target lies in it and b must pass through it (the
 // case of la_cbs_target_candidates_test.cpp: optimum 46).
 World corridorToATarget() {

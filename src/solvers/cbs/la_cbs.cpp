@@ -6,11 +6,13 @@
 #include <limits>
 #include <optional>
 #include <queue>
+#include <set>
 
 #include "fleet_planner/runtime/errors.h"
 #include "fleet_planner/solvers/search/agent_conflicts.h"
 #include "fleet_planner/solvers/cbs/cbs_split.h"
 #include "fleet_planner/solvers/cbs/pairwise_delay.h"
+#include "fleet_planner/solvers/cbs/path_around_others.h"
 #include "fleet_planner/solvers/registry.h"
 #include "fleet_planner/solvers/search/solve_common.h"
 #include "fleet_planner/solvers/search/space_time_astar.h"
@@ -92,6 +94,7 @@ class CbsSearch {
       const int id = open_.pop();
       if (id < 0) break;
       lower_bound_ = std::max(lower_bound_, open_.leastF());
+      if (incumbentGoodEnough()) return success(*incumbent_);
       if (max_nodes_ >= 0 &&
           (stats_.high_level_nodes >= max_nodes_ || stats_.low_level_expansions >= max_expansions_)) {
         return failure(SolveStatus::Timeout, "constraint tree reached its node limit");
@@ -107,6 +110,9 @@ class CbsSearch {
           if (!focal()) lower_bound_ = nodes_[id].cost;
           return success(current);
         }
+        tryAroundOthers(current);
+        if (incumbentGoodEnough()) return success(*incumbent_);
+        if (problem_.deadline.expired()) return stopped();
         const AgentConflict& first = earliest.front();
         if (first.t == 0 && first.kind == AgentConflict::Kind::Vertex) {
           return failure(SolveStatus::Infeasible,
@@ -230,6 +236,33 @@ class CbsSearch {
   }
 
   bool focal() const { return options_.suboptimality > 1.0; }
+
+  // ECBS's primal step (path_around_others.h): when every conflict in `current` is between one
+  // pair not tried before, each of the two planned around everybody else's paths; a
+  // conflict-free plan cheaper than the incumbent becomes the incumbent.
+  void tryAroundOthers(const std::vector<StatePath>& current) {
+    if (!focal() || !options_.around_others || active_.size() < static_cast<std::size_t>(n_)) return;
+    const std::vector<std::pair<int, int>> pairs = conflictingPairs(space_, current);
+    if (pairs.size() != 1 || !tried_pairs_.insert(pairs[0]).second) return;
+    for (const int a : {pairs[0].first, pairs[0].second}) {
+      const LowLevelResult r = pathAroundOthers(space_, a, current, problem_.deadline, options_.max_low_level_nodes);
+      stats_.low_level_expansions += r.expansions;
+      if (r.outcome != LowLevelResult::Outcome::Found) continue;
+      std::vector<StatePath> plan = current;
+      plan[a] = r.path;
+      long long cost = 0;
+      for (const int b : active_) cost += pathCost(plan[b]);
+      if ((incumbent_ && cost >= incumbent_cost_) || countConflicts(space_, plan) > 0) continue;
+      incumbent_ = std::move(plan);
+      incumbent_cost_ = cost;
+    }
+  }
+  // The incumbent costs at most the weight times the least lower bound: within the weight of
+  // the optimum.
+  bool incumbentGoodEnough() const {
+    return incumbent_ && static_cast<double>(incumbent_cost_) <=
+                             options_.suboptimality * static_cast<double>(lower_bound_);
+  }
   static LaCbsOptions optimal(LaCbsOptions o) {
     o.suboptimality = 1.0;
     return o;
@@ -355,6 +388,9 @@ class CbsSearch {
   SolveStats stats_;
   long long stored_states_ = 0;
   bool hit_limit_ = false;
+  std::set<std::pair<int, int>> tried_pairs_;       // planned around the others (primal step)
+  std::optional<std::vector<StatePath>> incumbent_;  // the cheapest conflict-free plan so far
+  long long incumbent_cost_ = 0;
 };
 
 }  // namespace

@@ -174,11 +174,12 @@ LowLevelResult spaceTimeAStar(const SearchSpace& space, int a, const AgentConstr
   const int goal_earliest = std::max({target_blocked + 1, reserved_last + 1, constraints.minCost()});
   const int max_cost = constraints.maxCost();
   if (goal_earliest > max_cost) return result;
-  const int static_from = std::max(constraints.maxTime(), reservations.lastChange()) + 1;
+  const int static_from = std::max({constraints.maxTime(), reservations.lastChange(), options.blocked_until}) + 1;
 
   auto stepBlocked = [&](StateId s, Action act, int t) {
     const GridPose p = g.pose(s);
     if (constraints.stepForbidden(cells, p, act, t)) return true;
+    if (options.blocked && options.blocked(s, act, t)) return true;
     return !reservations.empty() && reservations.taken(space.probe(a, p.heading, act), {p.x, p.y}, t);
   };
 

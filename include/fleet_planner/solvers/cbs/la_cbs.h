@@ -67,6 +67,11 @@ struct LaCbsOptions {
   /// bound, the one with fewest conflicts. The plan costs at most w times the optimum; the
   /// pairwise delay heuristic bounds the robots' lower bounds instead of their costs. 1: optimal.
   double suboptimality = 1.0;
+  /// With suboptimality above 1: where every conflict of the node being expanded is between the
+  /// same two agents (first time for that pair), each is planned around all other paths
+  /// (path_around_others.h); the cheapest such conflict-free plan is returned once it costs at
+  /// most the weight times the least lower bound.
+  bool around_others = true;
 };
 
 class LaCbs : public Solver {

@@ -29,6 +29,11 @@ struct LowLevelOptions {
   /// first. The path found costs at most the weight times the optimum, and the result's
   /// lower_bound is the least open f when it was found.
   double focal_weight = 1.0;
+  /// Steps the search may not take besides those the constraints and reservations forbid (may
+  /// be empty): `blocked(s, action, t)`, the same for every t after `blocked_until`. A target
+  /// that it blocks for some time must be told to the search by a cost bound (requireCostAbove).
+  std::function<bool(StateId s, Action action, int t)> blocked;
+  int blocked_until = -1;
 };
 
 struct LowLevelResult {

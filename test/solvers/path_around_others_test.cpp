@@ -1,0 +1,73 @@
+// ECBS's primal step (path_around_others.h): one robot planned around every other robot's whole
+// path. On random tiny worlds the plan it makes with the others' paths passes the independent
+// plan validator whenever it finds a path, and it finds one where the robot can wait for the
+// others to pass.
+#include <gtest/gtest.h>
+
+#include "fleet_planner/model/plan_validator.h"
+#include "fleet_planner/solvers/cbs/path_around_others.h"
+#include "fleet_planner/solvers/search/solve_common.h"
+#include "solver_test_util.h"
+#include "test_maps.h"
+#include "tiny_worlds.h"
+
+namespace fleet_planner::test {
+namespace {
+
+TEST(PathAroundOthers, PlansWithTheOthersPathsPassTheValidator) {
+  Rng rng(7);
+  int found = 0, waited = 0;
+  for (int round = 0; round < 300; ++round) {
+    const std::unique_ptr<World> w = randomTinyWorld(rng, round % 3 == 0 ? 3 : 2);
+    const Subproblem sub = allRobots(*w);
+    const SearchSpace space(sub);
+    std::vector<StatePath> paths(space.numAgents());
+    bool alone = true;
+    for (int a = 1; a < space.numAgents() && alone; ++a) {
+      const LowLevelResult r = spaceTimeAStar(space, a, {}, sub.deadline);
+      alone = r.outcome == LowLevelResult::Outcome::Found;
+      paths[a] = r.path;
+    }
+    if (!alone || countConflicts(space, paths) > 0) continue;  // the others must not meet
+    const LowLevelResult mine = pathAroundOthers(space, 0, paths, sub.deadline, 1'000'000);
+    if (mine.outcome != LowLevelResult::Outcome::Found) continue;
+    const LowLevelResult free = spaceTimeAStar(space, 0, {}, sub.deadline);
+    ASSERT_EQ(free.outcome, LowLevelResult::Outcome::Found);
+    EXPECT_GE(mine.path.size(), free.path.size());
+    waited += mine.path.size() > free.path.size();
+    paths[0] = mine.path;
+    Plan plan;
+    plan.paths = toPosePaths(space, paths);
+    const ValidationResult v = validatePlan(w->map, w->instance, plan);
+    EXPECT_TRUE(v.valid()) << "round " << round << ": " << v.violation.message;
+    ++found;
+  }
+  EXPECT_GT(found, 60);
+  EXPECT_GT(waited, 10);
+  std::cout << "[ around    ] " << found << " paths, " << waited << " longer than alone\n";
+}
+
+// b drives up a one-cell corridor across a's way; a must let it pass.
+TEST(PathAroundOthers, WaitsForAnotherRobotToClearACorridor) {
+  const World w(mapFromRows({"@@@@.@@@@", ".........", "@@@@.@@@@", "@@@@.@@@@"}),
+                {dot("a", {3, 1, 0}, {8, 1, 0}), dot("b", {4, 3, 3}, {4, 0, 3})});
+  const Subproblem sub = allRobots(w);
+  const SearchSpace space(sub);
+  std::vector<StatePath> paths(2);
+  paths[1] = spaceTimeAStar(space, 1, {}, sub.deadline).path;
+  ASSERT_FALSE(paths[1].empty());
+  paths[0] = spaceTimeAStar(space, 0, {}, sub.deadline).path;
+  ASSERT_EQ(paths[0].size(), 6u);
+  ASSERT_GT(countConflicts(space, paths), 0);  // straight through, a meets b in the corridor
+  const LowLevelResult r = pathAroundOthers(space, 0, paths, sub.deadline, 100'000);
+  ASSERT_EQ(r.outcome, LowLevelResult::Outcome::Found);
+  paths[0] = r.path;
+  Plan plan;
+  plan.paths = toPosePaths(space, paths);
+  const ValidationResult v = validatePlan(w.map, w.instance, plan);
+  EXPECT_TRUE(v.valid()) << v.violation.message;
+  EXPECT_GT(r.path.size(), 6u);
+}
+
+}  // namespace
+}  // namespace fleet_planner::test
