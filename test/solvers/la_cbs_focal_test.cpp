@@ -94,7 +94,7 @@ TEST(LaCbsFocal, FewerTreeNodesWhereARobotMustWaitForACorridor) {
 
 TEST(LaCbsFocal, SameInputSamePlan) {
   const World w = corridorToATarget();
-  const Outcome a = solveFocal(w, 1.3), b = solveFocal(w, 1.3);
+  const Outcome a = solveFocal(w, 1.2), b = solveFocal(w, 1.2);
   ASSERT_TRUE(solvedValidly(a)) << describe(a);
   ASSERT_TRUE(solvedValidly(b)) << describe(b);
   EXPECT_EQ(a.plan.paths, b.plan.paths);
