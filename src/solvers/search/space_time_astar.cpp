@@ -2,8 +2,8 @@
 
 #include <algorithm>
 #include <memory>
-#include <queue>
 
+#include "fleet_planner/solvers/search/focal_list.h"
 #include "node_table.h"
 
 namespace fleet_planner {
@@ -83,76 +83,31 @@ struct Node {
   int parent;
 };
 
-// The open list. Weight 1: best-first by f, then fewer conflicts, deeper, first generated.
-// Weight w > 1 (focal search): among the nodes whose f is at most w times the least open f,
-// fewest conflicts first, then f, deeper, first generated. `dead(i)` tells a node superseded
-// by a cheaper duplicate; the focal list also skips the nodes it has handed out.
-class Frontier {
- public:
-  Frontier(const std::vector<Node>& nodes, double weight)
-      : weight_(weight), by_f_(ByF{&nodes}), pending_(ByF{&nodes}), focal_(ByConflicts{&nodes}), nodes_(nodes) {}
-
-  void push(int i) {
-    by_f_.push(i);
-    if (weight_ > 1.0) pending_.push(i);
+// The open list (focal_list.h). Weight 1: best-first by f, then fewer conflicts, deeper, first
+// generated. Weight w > 1 (focal search): among the nodes whose f is at most w times the least
+// open f, fewest conflicts first, then as above.
+struct ByF {
+  const std::vector<Node>* nodes;
+  bool operator()(int x, int y) const {
+    const Node &a = (*nodes)[x], &b = (*nodes)[y];
+    if (a.f != b.f) return a.f > b.f;
+    if (a.conflicts != b.conflicts) return a.conflicts > b.conflicts;
+    if (a.g != b.g) return a.g < b.g;  // deeper first
+    return x > y;                      // then first generated: deterministic
   }
-
-  /// The next node to expand, or -1 when none is left.
-  template <class Dead>
-  int pop(Dead dead) {
-    if (weight_ <= 1.0) {
-      if (by_f_.empty()) return -1;
-      const int i = by_f_.top();
-      by_f_.pop();
-      least_f_ = nodes_[i].f;
-      return i;
-    }
-    auto gone = [&](int i) { return (static_cast<std::size_t>(i) < taken_.size() && taken_[i]) || dead(i); };
-    while (!by_f_.empty() && gone(by_f_.top())) by_f_.pop();
-    if (by_f_.empty()) return -1;
-    least_f_ = nodes_[by_f_.top()].f;
-    const double bound = weight_ * least_f_;
-    while (!pending_.empty() && nodes_[pending_.top()].f <= bound) {
-      focal_.push(pending_.top());
-      pending_.pop();
-    }
-    while (gone(focal_.top())) focal_.pop();  // never empties: the least-f node is in it
-    const int i = focal_.top();
-    focal_.pop();
-    if (taken_.size() <= static_cast<std::size_t>(i)) taken_.resize(nodes_.size(), 0);
-    taken_[i] = 1;
-    return i;
-  }
-
-  /// The least f of the open nodes when the last node was handed out: a lower bound on the cost.
-  int leastF() const { return least_f_; }
-
- private:
-  struct ByF {
-    const std::vector<Node>* nodes;
-    bool operator()(int x, int y) const {
-      const Node &a = (*nodes)[x], &b = (*nodes)[y];
-      if (a.f != b.f) return a.f > b.f;
-      if (a.conflicts != b.conflicts) return a.conflicts > b.conflicts;
-      if (a.g != b.g) return a.g < b.g;  // deeper first
-      return x > y;                      // then first generated: deterministic
-    }
-  };
-  struct ByConflicts {
-    const std::vector<Node>* nodes;
-    bool operator()(int x, int y) const {
-      const Node &a = (*nodes)[x], &b = (*nodes)[y];
-      if (a.conflicts != b.conflicts) return a.conflicts > b.conflicts;
-      return ByF{nodes}(x, y);
-    }
-  };
-  double weight_;
-  std::priority_queue<int, std::vector<int>, ByF> by_f_, pending_;
-  std::priority_queue<int, std::vector<int>, ByConflicts> focal_;
-  std::vector<char> taken_;
-  const std::vector<Node>& nodes_;
-  int least_f_ = 0;
 };
+struct ByConflicts {
+  const std::vector<Node>* nodes;
+  bool operator()(int x, int y) const {
+    const Node &a = (*nodes)[x], &b = (*nodes)[y];
+    if (a.conflicts != b.conflicts) return a.conflicts > b.conflicts;
+    return ByF{nodes}(x, y);
+  }
+};
+struct NodeF {
+  int operator()(const Node& n) const { return n.f; }
+};
+using Frontier = FocalList<Node, ByF, ByConflicts, NodeF>;
 
 }  // namespace
 
@@ -242,7 +197,7 @@ LowLevelResult spaceTimeAStar(const SearchSpace& space, int a, const AgentConstr
     if (node.s == target && !node.held && node.g >= goal_earliest) {
       for (int i = index; i >= 0; i = nodes[i].parent) result.path.push_back(nodes[i].s);
       std::reverse(result.path.begin(), result.path.end());
-      result.lower_bound = std::min(node.g, open.leastF());
+      result.lower_bound = static_cast<int>(std::min<long long>(node.g, open.leastF()));
       result.outcome = LowLevelResult::Outcome::Found;
       return result;
     }
