@@ -71,14 +71,7 @@ TEST(LaCbsFocal, AWeightNearOneKeepsTheOptimum) {
   EXPECT_GT(solved, 20);
 }
 
-// Two rooms joined by a one-cell corridor; a's target lies in it and b must pass through it (the
-// case of la_cbs_target_candidates_test.cpp: optimum 46).
-World corridorToATarget() {
-  return World(mapFromRows({"@@@@@@@@@@", "@........@", "@........@", "@@@@.@@@@@", "@@@@.@@@@@", "@@@@.@@@@@",
-                            "@@@@.@@@@@", "@........@", "@........@", "@@@@@@@@@@"}),
-               {dot("a", {2, 8, 0}, {4, 4, 3}), dot("b", {4, 1, 2}, {6, 8, 0}), dot("c", {7, 7, 1}, {1, 1, 0})});
-}
-
+// corridorToATarget (tiny_worlds.h): a must wait outside the corridor until b is through.
 TEST(LaCbsFocal, FewerTreeNodesWhereARobotMustWaitForACorridor) {
   const World w = corridorToATarget();
   LaCbs optimal;

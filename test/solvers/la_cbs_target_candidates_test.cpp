@@ -11,6 +11,7 @@
 #include "fleet_planner/solvers/registry.h"
 #include "solver_test_util.h"
 #include "test_maps.h"
+#include "tiny_worlds.h"
 
 namespace fleet_planner::test {
 namespace {
@@ -63,17 +64,10 @@ Outcome solveCbs(const World& w, bool target_candidates) {
   return solveWith(solver, w, allRobots(w, 300.0));
 }
 
-// Two rooms joined by a one-cell corridor. a's target lies in the corridor, b must pass through
-// it from the other room, c crosses the lower room. The optimum (46, by exhaustive search) has
-// a wait until b is through: with cell splits alone the pair meets head-on in the corridor
-// step after step and the tree took 1,650 nodes; split on a's cost at the conflict where b
-// drives over a's parked target, 448.
-World corridorToATarget() {
-  return World(mapFromRows({"@@@@@@@@@@", "@........@", "@........@", "@@@@.@@@@@", "@@@@.@@@@@", "@@@@.@@@@@",
-                            "@@@@.@@@@@", "@........@", "@........@", "@@@@@@@@@@"}),
-               {dot("a", {2, 8, 0}, {4, 4, 3}), dot("b", {4, 1, 2}, {6, 8, 0}), dot("c", {7, 7, 1}, {1, 1, 0})});
-}
-
+// corridorToATarget (tiny_worlds.h): the optimum (46, by exhaustive search) has a wait until b
+// is through. With cell splits alone the pair meets head-on in the corridor step after step and
+// the tree took 1,650 nodes; split on a's cost at the conflict where b drives over a's parked
+// target, 448.
 TEST(LaCbsTargetCandidates, OptimalWithFewerNodesWhereARobotParksInACorridor) {
   const World w = corridorToATarget();
   const Outcome o = solveCbs(w, true);

@@ -25,6 +25,26 @@ World corridorWorld() {
   return World(mapFromRows(rows), {makeRobot("r", Footprint::circle(0.4), {1, 1, 0}, {42, 1, 0})});
 }
 
+// A 12 x 9 room with 14 random walls and one robot (a disc, or a bar when `bar`) from a random
+// cell at heading 0 to a random pose; null when start and target share a cell or the robot does
+// not fit at either.
+std::unique_ptr<World> randomRoom(Rng& rng, bool bar) {
+  std::vector<std::string> rows(9, std::string(12, '.'));
+  for (int k = 0; k < 14; ++k) rows[rng.uniformInt(0, 8)][rng.uniformInt(0, 11)] = '@';
+  const GridPose start{static_cast<int>(rng.uniformInt(0, 11)), static_cast<int>(rng.uniformInt(0, 8)), 0};
+  const GridPose target{static_cast<int>(rng.uniformInt(0, 11)), static_cast<int>(rng.uniformInt(0, 8)),
+                        static_cast<int>(rng.uniformInt(0, 3))};
+  rows[start.y][start.x] = rows[target.y][target.x] = '.';
+  if (start.x == target.x && start.y == target.y) return nullptr;
+  const Robot robot = bar ? makeRobot("r", Footprint::block(-0.5, -0.4, 1.5, 0.4), start, target)
+                          : makeRobot("r", Footprint::circle(0.4), start, target);
+  try {
+    return std::make_unique<World>(mapFromRows(rows), std::vector<Robot>{robot});
+  } catch (const InvalidInput&) {
+    return nullptr;
+  }
+}
+
 // The corridor cell x = 30 is closed from `from` on; a far-away cell constraint at t = 3000
 // keeps the world changing until then, so space-time up to t = 3000 is open to a blind search.
 AgentConstraints closedCorridor(int from, const CellSet& cell) {
@@ -58,21 +78,8 @@ TEST(SpaceTimeAStar, AreaBoundsNeverChangeTheCost) {
   int found = 0, none = 0;
   for (std::uint64_t seed = 1; seed <= 600; ++seed) {
     Rng rng(seed);
-    std::vector<std::string> rows(9, std::string(12, '.'));
-    for (int k = 0; k < 14; ++k) rows[rng.uniformInt(0, 8)][rng.uniformInt(0, 11)] = '@';
-    const GridPose start{static_cast<int>(rng.uniformInt(0, 11)), static_cast<int>(rng.uniformInt(0, 8)), 0};
-    const GridPose target{static_cast<int>(rng.uniformInt(0, 11)), static_cast<int>(rng.uniformInt(0, 8)),
-                          static_cast<int>(rng.uniformInt(0, 3))};
-    rows[start.y][start.x] = rows[target.y][target.x] = '.';
-    if (start.x == target.x && start.y == target.y) continue;
-    const Robot robot = seed % 2 ? makeRobot("r", Footprint::circle(0.4), start, target)
-                                 : makeRobot("r", Footprint::block(-0.5, -0.4, 1.5, 0.4), start, target);
-    std::unique_ptr<World> w;
-    try {
-      w = std::make_unique<World>(mapFromRows(rows), std::vector<Robot>{robot});
-    } catch (const InvalidInput&) {
-      continue;  // the bar does not fit at its start or target
-    }
+    const std::unique_ptr<World> w = randomRoom(rng, seed % 2 == 0);
+    if (!w) continue;
     const Subproblem sub = allRobots(*w);
     const SearchSpace space(sub);
     if (space.distance(0, space.start(0)) < 0) continue;
@@ -155,14 +162,9 @@ TEST(SpaceTimeAStar, FocalSearchStaysWithinItsWeight) {
   int found = 0, longer = 0;
   for (std::uint64_t seed = 1; seed <= 300; ++seed) {
     Rng rng(seed);
-    std::vector<std::string> rows(9, std::string(12, '.'));
-    for (int k = 0; k < 14; ++k) rows[rng.uniformInt(0, 8)][rng.uniformInt(0, 11)] = '@';
-    const GridPose start{static_cast<int>(rng.uniformInt(0, 11)), static_cast<int>(rng.uniformInt(0, 8)), 0};
-    const GridPose target{static_cast<int>(rng.uniformInt(0, 11)), static_cast<int>(rng.uniformInt(0, 8)),
-                          static_cast<int>(rng.uniformInt(0, 3))};
-    rows[start.y][start.x] = rows[target.y][target.x] = '.';
-    if (start.x == target.x && start.y == target.y) continue;
-    const World w(mapFromRows(rows), {makeRobot("r", Footprint::circle(0.4), start, target)});
+    const std::unique_ptr<World> room = randomRoom(rng, false);
+    if (!room) continue;
+    const World& w = *room;
     const Subproblem sub = allRobots(w);
     const SearchSpace space(sub);
     if (space.distance(0, space.start(0)) < 0) continue;

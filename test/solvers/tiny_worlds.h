@@ -1,6 +1,7 @@
 #pragma once
-// Random tiny worlds for the tests that compare a search with the exhaustive reference
-// (exhaustive_search.h): a few cells, a few walls, 2-3 dots and bars at random poses.
+// Tiny worlds for the tests that compare a search with the exhaustive reference
+// (exhaustive_search.h): random ones (a few cells, a few walls, 2-3 dots and bars at random
+// poses), and a corridor that holds a robot's target.
 #include <memory>
 #include <string>
 #include <vector>
@@ -36,6 +37,14 @@ inline std::unique_ptr<World> randomTinyWorld(Rng& rng, int robots) {
     } catch (const InvalidInput&) {
     }
   }
+}
+
+// Two rooms joined by a one-cell corridor. a's target lies in the corridor, b must pass through
+// it from the other room, c crosses the lower room. The optimum is 46 (by exhaustive search).
+inline World corridorToATarget() {
+  return World(mapFromRows({"@@@@@@@@@@", "@........@", "@........@", "@@@@.@@@@@", "@@@@.@@@@@", "@@@@.@@@@@",
+                            "@@@@.@@@@@", "@........@", "@........@", "@@@@@@@@@@"}),
+               {dot("a", {2, 8, 0}, {4, 4, 3}), dot("b", {4, 1, 2}, {6, 8, 0}), dot("c", {7, 7, 1}, {1, 1, 0})});
 }
 
 }  // namespace fleet_planner::test
