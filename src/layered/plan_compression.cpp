@@ -3,7 +3,6 @@
 
 #include <algorithm>
 #include <chrono>
-#include <cstdlib>
 
 #include "fleet_planner/execution/earliest_schedule.h"
 
@@ -88,7 +87,7 @@ class Compressor {
       for (int t = t0; t <= last; ++t) {
         const GridPose& a = stateAt(p, t);
         const GridPose& b = stateAt(q, t);
-        if (std::abs(a.x - b.x) > reach || std::abs(a.y - b.y) > reach) continue;
+        if (fartherApart(a, b, reach)) continue;
         if (stepsMeet(A, p, t, B, q, t, model_)) return false;
       }
     }

@@ -48,7 +48,7 @@ std::vector<int> blockers(const FleetGraphs& graphs, const std::vector<Path>& pa
     int score = 0;
     for (const GridPose& q : paths[j]) {
       for (const GridPose& p : ideal) {
-        if (std::abs(p.x - q.x) > reach || std::abs(p.y - q.y) > reach) continue;
+        if (fartherApart(p, q, reach)) continue;
         if (footprintsOverlap(A, p, B, q)) {
           ++score;
           break;

@@ -1,6 +1,5 @@
 // Assembling a full plan from a lattice plan and the robots' connections; see lattice.h.
 #include <algorithm>
-#include <cstdlib>
 #include <memory>
 #include <numeric>
 
@@ -18,7 +17,7 @@ bool pathsMeet(const RobotCells& a, const Path& pa, const RobotCells& b, const P
   const int apart = a.reach() + b.reach();
   for (int u = std::max(0, from); u < end; ++u) {
     const GridPose &a0 = stateAt(pa, u), &b0 = stateAt(pb, u);
-    if (std::abs(a0.x - b0.x) > apart || std::abs(a0.y - b0.y) > apart) continue;
+    if (fartherApart(a0, b0, apart)) continue;
     const CellSet* sa = a.sweepAt(u, model);
     const CellSet* sb = b.sweepAt(u, model);
     if (sa == nullptr || sb == nullptr) return true;  // not a motion: never taken as clear

@@ -6,6 +6,7 @@
 /// state = cell * 4 + heading, so per-state data lives in flat arrays of size 4 * cells.
 #include <array>
 #include <cstdint>
+#include <cstdlib>
 #include <string>
 
 namespace fleet_planner {
@@ -32,6 +33,12 @@ struct GridPose {
   }
   friend bool operator!=(const GridPose& a, const GridPose& b) { return !(a == b); }
 };
+
+/// The poses' cells lie more than `reach` apart along an axis: what two robots cover within
+/// reach of their cells (their bodies, a step's sweep) cannot share a cell then.
+inline bool fartherApart(const GridPose& a, const GridPose& b, int reach) {
+  return std::abs(a.x - b.x) > reach || std::abs(a.y - b.y) > reach;
+}
 
 /// "(x,y,heading)", for messages.
 inline std::string toString(const GridPose& p) {

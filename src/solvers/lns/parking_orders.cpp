@@ -3,7 +3,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
 
 #include "fleet_planner/model/collision.h"
 
@@ -47,7 +46,7 @@ std::vector<int> targetsCrossed(const SearchSpace& space, const std::vector<Stat
       for (StateId s : ways[a]) {
         const GridPose q = space.graph(a).pose(s);
         // Footprints farther apart than their reaches cannot overlap: skip the cell test.
-        if (std::abs(q.x - target.x) > reach || std::abs(q.y - target.y) > reach) continue;
+        if (fartherApart(q, target, reach)) continue;
         if (footprintsOverlap(space.cells(b), target, space.cells(a), q)) {
           ++crossed[b];
           break;
