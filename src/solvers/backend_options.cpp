@@ -58,6 +58,7 @@ void LaLns::configure(const BackendOptionValues& values) {
   bind.integer("stage_robots", o.stage_robots, 0, 100000);
   bind.integer("parking_robots", o.parking_robots, 1, 100000);
   bind.integer("parking_expansions", o.parking_expansions, 0, kMaxCount);
+  bind.integer("parking_expansions_per_robot", o.parking_expansions_per_robot, 0, kMaxCount);
   bind.number("parking_share", o.parking_share, 0, 1);
   bind.integer("parking_orders", o.parking_orders, 1, 3);
   bind.number("parking_order_slack", o.parking_order_slack, 1, 100);

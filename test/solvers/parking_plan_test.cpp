@@ -9,6 +9,7 @@
 
 #include "fleet_planner/model/plan_validator.h"
 #include "fleet_planner/solvers/lns/la_lns.h"
+#include "fleet_planner/solvers/search/agent_conflicts.h"
 #include "fleet_planner/solvers/search/solve_common.h"
 #include "solver_test_util.h"
 #include "test_maps.h"
@@ -197,6 +198,38 @@ TEST(ParkingPlan, TheCheapestOrderWithinTheSlackIsKeptWhateverTheThreads) {
   }
 }
 
+TEST(ParkingPlan, WhereNoOrderGetsEverybodyHomeThePlanWithMostHomeIsKept) {
+  const World w = twoOrderWorld();
+  const Subproblem sub = allRobots(w);
+  const SearchSpace space(sub);
+  const std::vector<std::vector<int>> orders = {{0, 1, 2, 3}, {3, 2, 1, 0}};
+  // A budget at which neither order gets all four home and the second gets more home.
+  ParkingPlanOptions options;
+  std::vector<ParkingPlan> alone;
+  bool found = false;
+  for (long long budget = 1; budget < 100'000 && !found; budget += 1 + budget / 8) {
+    options.max_expansions = budget;
+    alone.clear();
+    for (const std::vector<int>& order : orders) {
+      long long e = 0;
+      const auto plan = parkingPlan(space, order, Deadline::in(5.0), options, e);
+      ASSERT_TRUE(plan.has_value());
+      alone.push_back(*plan);
+    }
+    found = alone[1].robots_home > alone[0].robots_home && alone[1].robots_home < space.numAgents();
+  }
+  ASSERT_TRUE(found) << "the world no longer tells the orders apart under a budget";
+  for (int threads : {1, 2}) {
+    long long expansions = 0;
+    const auto plan = fastestParkingPlan(space, orders, Deadline::in(5.0), options, threads, expansions);
+    ASSERT_TRUE(plan.has_value()) << threads << " threads";
+    EXPECT_EQ(plan->order, 1) << threads << " threads";
+    EXPECT_EQ(plan->paths, alone[1].paths) << threads << " threads";
+    EXPECT_EQ(plan->robots_home, alone[1].robots_home) << threads << " threads";
+    EXPECT_FALSE(firstConflict(space, plan->paths).has_value()) << "a partial plan, but collision-free";
+  }
+}
+
 TEST(ParkingPlan, IsLaLnsFirstPlan) {
   const World w = corridorWorld();
   Subproblem sub = allRobots(w);
@@ -215,6 +248,25 @@ TEST(ParkingPlan, IsLaLnsFirstPlan) {
   ASSERT_TRUE(solvedValidly(solved)) << describe(solved);
   EXPECT_EQ(solved.result.paths, toPosePaths(space, plan->paths))
       << "every robot got home: its plan is the answer";
+}
+
+TEST(ParkingPlan, LaLnsBudgetGrowsWithTheRobots) {
+  const World w = corridorWorld();
+  Subproblem sub = allRobots(w);
+  const SearchSpace space(sub);
+  long long expansions = 0;
+  const auto plan = planAll(space, expansions);
+  ASSERT_TRUE(plan.has_value());
+  ASSERT_GT(expansions, 1);
+  sub.max_expansions = 100;  // as above: only the parking plan fits in it
+  LaLnsOptions options;
+  options.parking_robots = 2;
+  options.parking_expansions = 1;  // far too few for the parking plan alone
+  options.parking_expansions_per_robot = (expansions + 1) / 2;
+  LaLns lns(options);
+  const Outcome solved = solveWith(lns, w, sub);
+  ASSERT_TRUE(solvedValidly(solved)) << describe(solved);
+  EXPECT_EQ(solved.result.paths, toPosePaths(space, plan->paths)) << "two robots' budget made the plan";
 }
 
 }  // namespace

@@ -102,7 +102,7 @@ SolveResult LnsSearch::run() {
 std::optional<SolveResult> LnsSearch::parkFirst(const std::vector<int>& order, std::vector<char>& parked) {
   ParkingPlanOptions o;
   o.max_pockets = std::max(1, options_.pockets);
-  o.max_expansions = options_.parking_expansions;
+  o.max_expansions = std::max(options_.parking_expansions, options_.parking_expansions_per_robot * n_);
   const Deadline deadline = problem_.deadline.within(problem_.deadline.remaining() * options_.parking_share);
   o.order_slack = options_.parking_order_slack;
   // The orders of parking_orders.h, one of them kept (fastestParkingPlan).

@@ -99,8 +99,15 @@ std::optional<ParkingPlan> fastestParkingPlan(const SearchSpace& space,
     if (home[i] != kNotHome && (fastest < 0 || home[i] < home[fastest])) fastest = i;
   }
   if (fastest < 0) {  // nobody gave way: every order ran its course
-    for (int i = 0; i < k; ++i) expansions += spent[i];
-    return plans[0];
+    // The plan that got most robots home (ties: the earlier order): its end game is smallest.
+    int most = -1;
+    for (int i = 0; i < k; ++i) {
+      expansions += spent[i];
+      if (plans[i] && (most < 0 || plans[i]->robots_home > plans[most]->robots_home)) most = i;
+    }
+    if (most < 0) return plans[0];
+    plans[most]->order = most;
+    return plans[most];
   }
   // Of the orders home within the slack of the fastest (whatever the threads: an order within
   // it never gives way), the plan of least sum of costs; ties: fewer expansions, then the

@@ -97,8 +97,12 @@ struct LaLnsOptions {
   /// shortest paths. Smaller subproblems, and those of fewer than twice `parking_robots` that
   /// the parking plan leaves unfinished, start from the soft first plan, whose robots drive
   /// together rather than one after the other.
+  /// The expansions of each order are at most the larger of `parking_expansions` and
+  /// `parking_expansions_per_robot` times the subproblem's robots: a fleet of hundreds needs
+  /// about as many per robot as one of fifty.
   int parking_robots = 8;
   long long parking_expansions = 3'000'000;
+  long long parking_expansions_per_robot = 60'000;
   double parking_share = 0.7;
   /// Parking plans in the first this many orders of parking_orders.h (1-3: longest way first,
   /// shortest first, crossed targets last); of those that get every robot home within

@@ -66,7 +66,8 @@ std::optional<ParkingPlan> parkingPlan(const SearchSpace& space, const std::vect
 
 /// Parking plans of the same agents in several orders: of the orders that get every agent
 /// home within `order_slack` times the expansions of the fastest, the plan of least sum of
-/// costs (ties: fewer expansions, then the earlier order); else the first order's. No order of
+/// costs (ties: fewer expansions, then the earlier order); else the plan of the order that got
+/// most agents home (ties: the earlier order), whose end game is smallest. No order of
 /// turns suits every fleet (robots that go a long way first make room for the others in one
 /// fleet and block it in the next), and which one does cannot be told beforehand; an order
 /// that pushes fewer robots aside tends to end both sooner and cheaper, but not always. An
