@@ -76,5 +76,56 @@ TEST(EndGame, AnswersNoneWhereTheRobotsLeftCannotPass) {
   EXPECT_FALSE(finish(space, sub, {{space.start(0)}, {space.start(1)}}, {0, 0}).has_value());
 }
 
+TEST(EndGame, TakesTheWayHomeThroughFewestStandingRobots) {
+  // Two streets: "a" left on the short one would pass b and c, parked at their targets there;
+  // the long one is empty. Only a is to move.
+  const World w(mapFromRows({"...........", ".@@@@@@@@@.", "..........."}),
+                {dot("a", {0, 0, 0}, {10, 0, 0}), dot("b", {4, 0, 0}, {4, 0, 0}),
+                 dot("c", {7, 0, 0}, {7, 0, 0})});
+  const Subproblem sub = allRobots(w);
+  const SearchSpace space(sub);
+  const std::vector<StatePath> parked = {{space.start(0)}, {space.start(1)}, {space.start(2)}};
+  EndGameOptions options;
+  options.max_group = 2;  // a, b and c together are too many
+  long long expansions = 0;
+  const auto done = endGame(space, sub, parked, {0, 1, 1}, LaLnsOptions{}, Deadline::in(5.0), options, expansions);
+  ASSERT_TRUE(done.has_value());
+  const std::vector<StatePath>& paths = *done;
+  EXPECT_EQ(paths[0].back(), space.target(0));
+  EXPECT_EQ(paths[1], parked[1]) << "b stays parked";
+  EXPECT_EQ(paths[2], parked[2]) << "c stays parked";
+  const ValidationResult v = validateStatePaths(w, sub, space, paths);
+  EXPECT_TRUE(v.valid()) << violationName(v.violation.kind);
+}
+
+TEST(EndGame, WidensTheGroupByTheNearestRobotsUpToItsSize) {
+  // "a" must pass b in a corridor; b's only pocket, two cells deep, holds c (parked at its
+  // target at the pocket's mouth). d and e stand on a lane behind a wall, four rows away.
+  // The first group (a, b) has no plan; the next takes c, the nearest, and not d and e,
+  // which would make five robots where three are allowed.
+  const World w(mapFromRows({"..............", "@@@@@@.@@@@@@@", "@@@@@@.@@@@@@@", "@@@@@@@@@@@@@@",
+                             ".............."}),
+                {dot("a", {0, 0, 0}, {13, 0, 0}), dot("b", {9, 0, 0}, {9, 0, 0}),
+                 dot("c", {6, 1, 2}, {6, 1, 2}), dot("d", {2, 4, 0}, {2, 4, 0}),
+                 dot("e", {12, 4, 0}, {12, 4, 0})});
+  const Subproblem sub = allRobots(w);
+  const SearchSpace space(sub);
+  std::vector<StatePath> parked;
+  for (int a = 0; a < 5; ++a) parked.push_back({space.start(a)});
+  EndGameOptions options;
+  options.max_group = 3;
+  long long expansions = 0;
+  const auto done =
+      endGame(space, sub, parked, {0, 1, 1, 1, 1}, LaLnsOptions{}, Deadline::in(5.0), options, expansions);
+  ASSERT_TRUE(done.has_value());
+  const std::vector<StatePath>& paths = *done;
+  for (int a = 0; a < 3; ++a) EXPECT_EQ(paths[a].back(), space.target(a)) << a;
+  EXPECT_GT(paths[2].size(), 1u) << "c made way";
+  EXPECT_EQ(paths[3], parked[3]) << "d stays";
+  EXPECT_EQ(paths[4], parked[4]) << "e stays";
+  const ValidationResult v = validateStatePaths(w, sub, space, paths);
+  EXPECT_TRUE(v.valid()) << violationName(v.violation.kind);
+}
+
 }  // namespace
 }  // namespace fleet_planner::test

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <deque>
+#include <queue>
 
 #include "fleet_planner/solvers/lns/la_lns.h"
 #include "fleet_planner/solvers/lns/pocket_repair.h"
@@ -27,26 +28,81 @@ StatePath wayHome(const SearchSpace& space, int a, StateId s) {
   return way;
 }
 
-// Cells marked in `way` grown by `by` cells (4-neighbourhood).
-void grow(std::vector<char>& way, int width, int height, int by) {
-  std::deque<std::pair<int, int>> open;  // (cell, depth)
-  for (int i = 0; i < width * height; ++i) {
-    if (way[i]) open.push_back({i, 0});
+// Agent a's way home from s among the static obstacles through fewest robots standing where
+// their paths end (`standing`: their cells): a state whose body meets one costs kCrowdCost
+// steps more. Its shortest way home leads through robots parked along a street that another
+// way passes by; the robots on the way chosen here are the ones the end game must move.
+// Empty if there is none.
+StatePath wayHomeAround(const SearchSpace& space, int a, StateId from, const std::vector<char>& standing) {
+  constexpr int kCrowdCost = 16;
+  const StateGraph& g = space.graph(a);
+  const std::size_t states = static_cast<std::size_t>(g.stateIdCount());
+  std::vector<int> cost(states, -1);
+  std::vector<StateId> parent(states, kNoState);
+  using Entry = std::pair<long long, StateId>;  // (f, state)
+  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> open;
+  cost[from] = 0;
+  open.push({space.distance(a, from), from});
+  while (!open.empty()) {
+    const auto [f, s] = open.top();
+    open.pop();
+    if (f != cost[s] + space.distance(a, s)) continue;
+    if (s == space.target(a)) {
+      StatePath way;
+      for (StateId q = s; q != kNoState; q = parent[q]) way.push_back(q);
+      std::reverse(way.begin(), way.end());
+      return way;
+    }
+    g.forEachSuccessor(s, [&](Action act, StateId next) {
+      if (space.distance(a, next) < 0 || !space.allows(a, s, act)) return;
+      const int c = cost[s] + 1 + (clearOfWay(space, a, next, standing) ? 0 : kCrowdCost);
+      if (cost[next] >= 0 && cost[next] <= c) return;
+      cost[next] = c;
+      parent[next] = s;
+      open.push({c + space.distance(a, next), next});
+    });
+  }
+  return {};
+}
+
+// Each cell's distance (4-neighbourhood, in cells) from the nearest cell marked in `way`, up to
+// `limit`; -1 beyond it.
+std::vector<int> depthFrom(const std::vector<char>& way, int width, int height, int limit) {
+  std::vector<int> depth(way.size(), -1);
+  std::deque<int> open;
+  for (std::size_t i = 0; i < way.size(); ++i) {
+    if (way[i]) {
+      depth[i] = 0;
+      open.push_back(static_cast<int>(i));
+    }
   }
   while (!open.empty()) {
-    const auto [c, d] = open.front();
+    const int c = open.front();
     open.pop_front();
-    if (d == by) continue;
+    if (depth[c] == limit) continue;
     const int x = c % width, y = c / width;
     const int next[4][2] = {{x + 1, y}, {x - 1, y}, {x, y + 1}, {x, y - 1}};
     for (const auto& n : next) {
       if (n[0] < 0 || n[1] < 0 || n[0] >= width || n[1] >= height) continue;
       const int k = n[1] * width + n[0];
-      if (way[k]) continue;
-      way[k] = 1;
-      open.push_back({k, d + 1});
+      if (depth[k] >= 0) continue;
+      depth[k] = depth[c] + 1;
+      open.push_back(k);
     }
   }
+  return depth;
+}
+
+// The least depth of agent b's body at state s (-1: none within the map's depths).
+int depthOf(const SearchSpace& space, int b, StateId s, const std::vector<int>& depth) {
+  const StateGraph& g = space.graph(b);
+  const GridPose p = g.pose(s);
+  int least = -1;
+  forEachMapCell(space.cells(b).body(p.heading), {p.x, p.y}, g.width(), g.height(), [&](std::size_t cell) {
+    if (depth[cell] >= 0 && (least < 0 || depth[cell] < least)) least = depth[cell];
+    return true;
+  });
+  return least;
 }
 
 }  // namespace
@@ -62,25 +118,40 @@ std::optional<std::vector<StatePath>> endGame(const SearchSpace& space, const Su
   int settled = space.reservations().lastChange() + 1;
   for (const StatePath& p : paths) settled = std::max(settled, static_cast<int>(p.size()) - 1);
 
-  std::vector<char> in(n, 0), way;
+  const StateGraph& g0 = space.graph(0);
+  std::vector<char> in(n, 0), way, standing(static_cast<std::size_t>(g0.width()) * g0.height(), 0);
   std::vector<int> group;
+  for (int a = 0; a < n; ++a) {
+    if (home[a]) markWay(space, a, {paths[a].back()}, standing);
+  }
   for (int a = 0; a < n; ++a) {
     if (home[a]) continue;
     in[a] = 1;
     group.push_back(a);
-    markWay(space, a, wayHome(space, a, paths[a].back()), way);
+    const StatePath around = wayHomeAround(space, a, paths[a].back(), standing);
+    markWay(space, a, around.empty() ? wayHome(space, a, paths[a].back()) : around, way);
   }
   if (group.empty()) return std::nullopt;
-  const StateGraph& g0 = space.graph(0);
   const int step = std::max(1, g0.actionModel().step);
   Instance instance = *problem.instance;
+  // The robots standing near the ways, by their distance from them (ties: index).
+  const int reach = options.margin * step * ((1 << std::max(0, options.rounds - 1)) - 1);
+  const std::vector<int> depth = depthFrom(way, g0.width(), g0.height(), reach);
+  std::vector<std::pair<int, int>> near;  // (depth, agent)
+  for (int b = 0; b < n; ++b) {
+    const int d = in[b] ? -1 : depthOf(space, b, paths[b].back(), depth);
+    if (d >= 0) near.push_back({d, b});
+  }
+  std::sort(near.begin(), near.end());
+  std::size_t taken = 0;
   for (int round = 0; round < options.rounds && !deadline.expired(); ++round) {
-    if (round > 0) grow(way, g0.width(), g0.height(), (options.margin * step) << (round - 1));
-    for (int b = 0; b < n; ++b) {
-      if (!in[b] && !clearOfWay(space, b, paths[b].back(), way)) {
-        in[b] = 1;
-        group.push_back(b);
-      }
+    // Round r takes the robots within margin x (2^r - 1) cells of the ways; in a crowd, the
+    // nearest of them up to max_group.
+    const int within = options.margin * step * ((1 << round) - 1);
+    while (taken < near.size() && near[taken].first <= within &&
+           (round == 0 || static_cast<int>(group.size()) < options.max_group)) {
+      in[near[taken].second] = 1;
+      group.push_back(near[taken++].second);
     }
     if (static_cast<int>(group.size()) > options.max_group) return std::nullopt;
     Subproblem sub;

@@ -23,12 +23,13 @@ namespace fleet_planner {
 struct LaLnsOptions;
 
 struct EndGameOptions {
-  /// Rounds of the group: the robots left and those standing on their shortest ways home; then
-  /// each round also the robots standing near those ways, within `margin` lattice steps after
-  /// the first round, the margin doubling each round (8, 24, 56 steps in all).
+  /// Rounds of the group: the robots left and those standing on their ways home (each the way
+  /// through fewest standing robots); then each round also the robots standing near those
+  /// ways, within `margin` lattice steps after the first round, the margin doubling each round
+  /// (8, 24, 56 steps in all), nearest first while the group holds fewer than `max_group`.
   int rounds = 4;
   int margin = 8;
-  int max_group = 16;  ///< robots planned together at most: a larger group ends the rounds
+  int max_group = 16;  ///< robots planned together at most: a first group beyond it ends the end game
 };
 
 /// Every agent's path (as `paths`, extended) with the agents not `home` at their targets; none
