@@ -230,7 +230,7 @@ TEST(ParkingPlan, WhereNoOrderGetsEverybodyHomeThePlanWithMostHomeIsKept) {
   }
 }
 
-TEST(ParkingPlan, IsLaLnsFirstPlan) {
+TEST(ParkingPlan, IsLaLnsFirstPlanWithinItsBudgetOrItsBudgetPerRobot) {
   const World w = corridorWorld();
   Subproblem sub = allRobots(w);
   const SearchSpace space(sub);
@@ -240,33 +240,21 @@ TEST(ParkingPlan, IsLaLnsFirstPlan) {
   // A budget that the plan fits in, and LA-LNS's soft first plan and repairs do not (about 700
   // expansions here).
   ASSERT_LT(expansions, 100);
-  sub.max_expansions = 100;
-  LaLnsOptions options;
-  options.parking_robots = 2;
-  LaLns lns(options);
-  const Outcome solved = solveWith(lns, w, sub);
-  ASSERT_TRUE(solvedValidly(solved)) << describe(solved);
-  EXPECT_EQ(solved.result.paths, toPosePaths(space, plan->paths))
-      << "every robot got home: its plan is the answer";
-}
-
-TEST(ParkingPlan, LaLnsBudgetGrowsWithTheRobots) {
-  const World w = corridorWorld();
-  Subproblem sub = allRobots(w);
-  const SearchSpace space(sub);
-  long long expansions = 0;
-  const auto plan = planAll(space, expansions);
-  ASSERT_TRUE(plan.has_value());
   ASSERT_GT(expansions, 1);
-  sub.max_expansions = 100;  // as above: only the parking plan fits in it
-  LaLnsOptions options;
-  options.parking_robots = 2;
-  options.parking_expansions = 1;  // far too few for the parking plan alone
-  options.parking_expansions_per_robot = (expansions + 1) / 2;
-  LaLns lns(options);
-  const Outcome solved = solveWith(lns, w, sub);
-  ASSERT_TRUE(solvedValidly(solved)) << describe(solved);
-  EXPECT_EQ(solved.result.paths, toPosePaths(space, plan->paths)) << "two robots' budget made the plan";
+  sub.max_expansions = 100;
+  for (const bool per_robot : {false, true}) {
+    LaLnsOptions options;
+    options.parking_robots = 2;
+    if (per_robot) {  // far too few for the plan alone, enough for two robots
+      options.parking_expansions = 1;
+      options.parking_expansions_per_robot = (expansions + 1) / 2;
+    }
+    LaLns lns(options);
+    const Outcome solved = solveWith(lns, w, sub);
+    ASSERT_TRUE(solvedValidly(solved)) << describe(solved);
+    EXPECT_EQ(solved.result.paths, toPosePaths(space, plan->paths))
+        << "every robot got home: its plan is the answer (per robot: " << per_robot << ")";
+  }
 }
 
 }  // namespace
