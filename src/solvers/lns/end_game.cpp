@@ -6,6 +6,7 @@
 #include <queue>
 
 #include "fleet_planner/solvers/lns/la_lns.h"
+#include "fleet_planner/solvers/lns/parking_plan.h"
 #include "fleet_planner/solvers/lns/pocket_repair.h"
 
 namespace fleet_planner {
@@ -29,12 +30,12 @@ StatePath wayHome(const SearchSpace& space, int a, StateId s) {
 }
 
 // Agent a's way home from s among the static obstacles through fewest robots standing where
-// their paths end (`standing`: their cells): a state whose body meets one costs kCrowdCost
-// steps more. Its shortest way home leads through robots parked along a street that another
-// way passes by; the robots on the way chosen here are the ones the end game must move.
-// Empty if there is none.
+// their paths end (`standing`: their cells): a state whose body meets one costs the parking
+// plan's crowd_cost steps more, as the parking plan's ways to clear do. Its shortest way home
+// leads through robots parked along a street that another way passes by; the robots on the way
+// chosen here are the ones the end game must move. Empty if there is none.
 StatePath wayHomeAround(const SearchSpace& space, int a, StateId from, const std::vector<char>& standing) {
-  constexpr int kCrowdCost = 16;
+  const int crowd_cost = ParkingPlanOptions{}.crowd_cost;
   const StateGraph& g = space.graph(a);
   const std::size_t states = static_cast<std::size_t>(g.stateIdCount());
   std::vector<int> cost(states, -1);
@@ -55,7 +56,7 @@ StatePath wayHomeAround(const SearchSpace& space, int a, StateId from, const std
     }
     g.forEachSuccessor(s, [&](Action act, StateId next) {
       if (space.distance(a, next) < 0 || !space.allows(a, s, act)) return;
-      const int c = cost[s] + 1 + (clearOfWay(space, a, next, standing) ? 0 : kCrowdCost);
+      const int c = cost[s] + 1 + (clearOfWay(space, a, next, standing) ? 0 : crowd_cost);
       if (cost[next] >= 0 && cost[next] <= c) return;
       cost[next] = c;
       parent[next] = s;

@@ -105,7 +105,7 @@ std::optional<ParkingPlan> fastestParkingPlan(const SearchSpace& space,
       expansions += spent[i];
       if (plans[i] && (most < 0 || plans[i]->robots_home > plans[most]->robots_home)) most = i;
     }
-    if (most < 0) return plans[0];
+    if (most < 0) return std::nullopt;  // every order's plan failed its final check
     plans[most]->order = most;
     return plans[most];
   }

@@ -92,14 +92,12 @@ struct LaLnsOptions {
   int stage_robots = 8;
   /// First plan of a subproblem of at least `parking_robots` robots: the robots that get to
   /// their targets one at a time, with the robots in their way pushed into pockets
-  /// (parking_plan.h), in at most this many expansions per order (0: never) and
-  /// `parking_share` of the time left for all orders together; the others start from their
-  /// shortest paths. Smaller subproblems, and those of fewer than twice `parking_robots` that
-  /// the parking plan leaves unfinished, start from the soft first plan, whose robots drive
-  /// together rather than one after the other.
-  /// The expansions of each order are at most the larger of `parking_expansions` and
-  /// `parking_expansions_per_robot` times the subproblem's robots: a fleet of hundreds needs
-  /// about as many per robot as one of fifty.
+  /// (parking_plan.h), in at most the larger of `parking_expansions` (0: never) and
+  /// `parking_expansions_per_robot` times its robots expansions per order (a fleet of hundreds
+  /// needs about as many per robot as one of fifty) and `parking_share` of the time left for
+  /// all orders together; the others start from their shortest paths. Smaller subproblems, and
+  /// those of fewer than twice `parking_robots` that the parking plan leaves unfinished, start
+  /// from the soft first plan, whose robots drive together rather than one after the other.
   int parking_robots = 8;
   long long parking_expansions = 3'000'000;
   long long parking_expansions_per_robot = 60'000;
