@@ -64,24 +64,32 @@ def random_subset_file(bench, name, k, seed, folder):
     return path
 
 
-def generated_file(cli, bench, name, k, seed, folder, feasible=False):
+def generated_file(cli, bench, name, k, seed, folder, feasible=False, sweep_tolerance=0.0):
     """Generates (once) a K-robot instance of the map with `seed` and returns its path; `feasible`:
-    with `generate --feasible` (robots of proven-impossible pairs drawn again)."""
-    path = os.path.join(folder, "%s_K%d_%s%d.yaml" % (name, k, "feas" if feasible else "gen", seed))
+    with `generate --feasible` (robots of pairs not shown possible drawn again), decided with the
+    solves' `sweep_tolerance`."""
+    tag = "feas" if feasible else "gen"
+    if feasible and sweep_tolerance:
+        tag += "_t%g_" % sweep_tolerance
+    path = os.path.join(folder, "%s_K%d_%s%d.yaml" % (name, k, tag, seed))
     if not os.path.exists(path):
+        extra = ["--feasible"] if feasible else []
+        if feasible and sweep_tolerance:
+            extra += ["--sweep-tolerance", str(sweep_tolerance)]
         r = subprocess.run([cli, "generate", "--map", map_path(bench, name), "--agents", str(k), "--seed", str(seed),
-                            "--out", path] + (["--feasible"] if feasible else []),
+                            "--out", path] + extra,
                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, universal_newlines=True)
         if r.returncode != 0:
             fail("generate %s K=%d seed %d: %s" % (name, k, seed, last_line(r.stderr)))
     return path
 
 
-def problem_args(bench, name, k, subset, seed, folder, cli=None):
+def problem_args(bench, name, k, subset, seed, folder, cli=None, sweep_tolerance=0.0):
     """CLI arguments naming the map and the robots of one run."""
     args = ["--map", map_path(bench, name)]
     if subset in ("generated", "feasible"):
-        path = generated_file(cli, bench, name, k, seed, folder, feasible=subset == "feasible")
+        path = generated_file(cli, bench, name, k, seed, folder, feasible=subset == "feasible",
+                              sweep_tolerance=sweep_tolerance)
         return args + ["--instance", path, "--agents", "0"]
     if subset == "mixed":
         return args + ["--instance", pool_path(bench, name), "--agents", str(k)]

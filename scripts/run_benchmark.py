@@ -81,7 +81,7 @@ def solve_one(args, run, folder):
     plan = os.path.join(folder, "plan.yaml")
     if os.path.exists(plan):
         os.remove(plan)
-    problem = problem_args(args.benchmark_dir, name, k, subset, seed, folder, args.cli) + model_args(args)
+    problem = problem_args(args.benchmark_dir, name, k, subset, seed, folder, args.cli, args.sweep_tolerance) + model_args(args)
     # "BACKEND+FALLBACK" (e.g. la_lacam+la_lns): the backend with a fallback backend (CLI --fallback).
     primary, _, fallback = backend.partition("+")
     argv = [args.cli, "solve"] + problem + [
@@ -131,7 +131,7 @@ def validate(args, problem, plan, row):
 
 def decompose_one(args, run, folder):
     name, k, subset, seed = run
-    problem = problem_args(args.benchmark_dir, name, k, subset, seed, folder, args.cli) + model_args(args)
+    problem = problem_args(args.benchmark_dir, name, k, subset, seed, folder, args.cli, args.sweep_tolerance) + model_args(args)
     argv = [args.cli, "decompose"] + problem + ["--steps", "1234", "--threads", str(args.threads)]
     if args.validate:
         argv.append("--check")

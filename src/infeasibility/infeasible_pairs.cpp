@@ -1,6 +1,8 @@
 // Proving a pair of robots infeasible; see infeasible_pairs.h.
 #include "fleet_planner/infeasibility/infeasible_pairs.h"
 
+#include <algorithm>
+
 #include "fleet_planner/infeasibility/pair_goal_search.h"
 #include "fleet_planner/solvers/lacam/la_lacam.h"
 #include "fleet_planner/solvers/search/safe_interval_search.h"
@@ -62,42 +64,50 @@ SolveResult planPairInTurn(const Subproblem& around, int a, int b, long long max
   });
 }
 
+PairDecision decidePair(const Instance& instance, const FleetGraphs& graphs, int a, int b, long long max_expansions,
+                        const Deadline& deadline) {
+  Subproblem alone;  // the map's obstacles only
+  alone.instance = &instance;
+  alone.graphs = &graphs;
+  if (planPairInTurn(alone, a, b, kInTurnExpansions, deadline).success()) return {PairVerdict::Possible, ""};
+  const PairEnds ends_a{a, instance.robots[a].start, instance.robots[a].target};
+  const PairEnds ends_b{b, instance.robots[b].start, instance.robots[b].target};
+  auto backwards = [&](long long configurations) {
+    return searchPairBackwards(graphs, ends_a, ends_b, configurations, deadline);
+  };
+  auto unreachable = [](const PairSearch& back) {
+    return "every configuration from which both can reach their targets explored, " +
+           std::to_string(back.configurations) + " of them: their starts are not one";
+  };
+  // Each backward search has a budget of its own, but not more than twice the forward one: a
+  // small budget stays small.
+  const PairSearch first = backwards(std::min(kFirstBackwardConfigurations, 2 * max_expansions));
+  if (first.reach == PairReach::Reachable) return {PairVerdict::Possible, ""};
+  if (first.reach == PairReach::Unreachable) return {PairVerdict::Impossible, unreachable(first)};
+  const SolveResult r = searchPairAlone(alone, a, b, max_expansions, deadline);
+  if (r.status == SolveStatus::Infeasible) return {PairVerdict::Impossible, r.reason};
+  if (r.success()) return {PairVerdict::Possible, ""};
+  // Forwards from the start the space was too large; backwards from the goal it may not be.
+  const long long back_budget = std::min(kBackwardConfigurations, 2 * max_expansions);
+  const PairSearch back = backwards(back_budget);
+  if (back.reach == PairReach::Unreachable) return {PairVerdict::Impossible, unreachable(back)};
+  if (back.reach == PairReach::Reachable) return {PairVerdict::Possible, ""};
+  return {PairVerdict::Undecided, deadline.expired() ? "the deadline passed"
+                                                     : "neither decided within " + std::to_string(max_expansions) +
+                                                           " expansions forwards nor " +
+                                                           std::to_string(back_budget) +
+                                                           " configurations backwards"};
+}
+
 std::optional<std::string> findInfeasiblePair(const Instance& instance, const FleetGraphs& graphs,
                                               const std::vector<std::pair<int, int>>& pairs,
                                               long long max_expansions, const Deadline& deadline) {
   for (const auto& [a, b] : pairs) {
     if (deadline.expired()) return std::nullopt;
-    Subproblem alone;  // the map's obstacles only
-    alone.instance = &instance;
-    alone.graphs = &graphs;
-    if (planPairInTurn(alone, a, b, kInTurnExpansions, deadline).success()) continue;
-    const PairEnds ends_a{a, instance.robots[a].start, instance.robots[a].target};
-    const PairEnds ends_b{b, instance.robots[b].start, instance.robots[b].target};
-    auto backwards = [&](long long configurations) {
-      return searchPairBackwards(graphs, ends_a, ends_b, configurations, deadline);
-    };
-    auto unreachable = [](const PairSearch& back) {
-      return "every configuration from which both can reach their targets explored, " +
-             std::to_string(back.configurations) + " of them: their starts are not one";
-    };
-    std::string why;
-    const PairSearch first = backwards(kFirstBackwardConfigurations);
-    if (first.reach == PairReach::Reachable) continue;
-    if (first.reach == PairReach::Unreachable) {
-      why = unreachable(first);
-    } else {
-      const SolveResult r = searchPairAlone(alone, a, b, max_expansions, deadline);
-      why = r.reason;
-      if (r.status != SolveStatus::Infeasible) {
-        if (r.success()) continue;
-        // Forwards from the start the space was too large; backwards from the goal it may not be.
-        const PairSearch back = backwards(kBackwardConfigurations);
-        if (back.reach != PairReach::Unreachable) continue;
-        why = unreachable(back);
-      }
-    }
+    const PairDecision d = decidePair(instance, graphs, a, b, max_expansions, deadline);
+    if (d.verdict != PairVerdict::Impossible) continue;
     return "robots '" + instance.robots[a].id + "' and '" + instance.robots[b].id +
-           "' cannot both reach their targets, even alone on the map (" + why + ")";
+           "' cannot both reach their targets, even alone on the map (" + d.why + ")";
   }
   return std::nullopt;
 }

@@ -1,12 +1,14 @@
-// Generated instances without proven impossibilities: on a map of narrow corridors the paper's
+// Generated instances without impossible pairs: on a map of narrow corridors the paper's
 // generator draws pairs of robots that cannot both reach their targets; --feasible draws them
-// again until the pair proofs find none.
+// again, and the pairs the pair proof leaves undecided too, until every entangled pair is shown
+// possible.
 #include <gtest/gtest.h>
 
 #include "fleet_planner/decomposition/decomposition.h"
 #include "fleet_planner/infeasibility/feasible_instances.h"
 #include "fleet_planner/infeasibility/infeasible_pairs.h"
 #include "test_maps.h"
+#include "test_robots.h"
 
 namespace fleet_planner::test {
 namespace {
@@ -24,12 +26,6 @@ GridMap corridors() {
                       "..@@@@@@@@..@@",
                       "..............",
                       ".............."});
-}
-
-std::vector<Footprint> footprintsOf(const Instance& instance) {
-  std::vector<Footprint> out;
-  for (const Robot& r : instance.robots) out.push_back(r.footprint);
-  return out;
 }
 
 // The first pair of the decomposition's entangled pairs that the pair proof rejects, if any.
@@ -71,6 +67,31 @@ TEST(FeasibleInstances, ProvenPairsAreDrawnAgainUntilNoneIsLeft) {
     }
   }
   EXPECT_GT(with_proof, 0) << "no seed drew a proven pair: the test checks nothing";
+}
+
+// Two one-cell robots trading the ends of a one-wide corridor: neither can go first, so the
+// pair is decided only by a search of both together. With a pocket halfway the pair is
+// possible, but a budget of ten expansions leaves it undecided: it is drawn again all the same.
+// Without the pocket it is impossible.
+TEST(FeasibleInstances, APairNotShownPossibleIsDrawnAgainAsWellAsAnImpossibleOne) {
+  const std::vector<std::pair<int, int>> pair{{0, 1}};
+  auto check = [&](const GridMap& map, long long expansions) {
+    Instance in;
+    in.robots = {dot("a", {0, 0, 0}, {13, 0, 0}), dot("b", {13, 0, 1}, {0, 0, 1})};
+    const FleetGraphs graphs(map, footprintsOf(in));
+    return pairsToRedraw(in, graphs, pair, expansions, Deadline::in(30.0));
+  };
+  const GridMap pocket = mapFromRows({"..............", "@@@@@@.@@@@@@@"});
+  EXPECT_TRUE(check(pocket, 500'000).empty()) << "shown possible: kept";
+  const std::vector<PairToRedraw> undecided = check(pocket, 10);
+  ASSERT_EQ(undecided.size(), 1u);
+  EXPECT_EQ(undecided[0].robot, 1);
+  EXPECT_EQ(undecided[0].other, 0);
+  EXPECT_NE(undecided[0].why.find("not shown able"), std::string::npos) << undecided[0].why;
+  const std::vector<PairToRedraw> impossible = check(mapFromRows({"..............", "@@@@@@@@@@@@@@"}), 500'000);
+  ASSERT_EQ(impossible.size(), 1u);
+  EXPECT_EQ(impossible[0].robot, 1);
+  EXPECT_NE(impossible[0].why.find("cannot both reach their targets"), std::string::npos) << impossible[0].why;
 }
 
 }  // namespace

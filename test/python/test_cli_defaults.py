@@ -91,6 +91,26 @@ class CliDefaultsTest(unittest.TestCase):
         self.assertEqual(run.returncode, 2, run.stdout)
         self.assertIn("BACKEND.OPTION=VALUE", run.stderr)
 
+    def test_generate_feasible_takes_the_solves_sweep_tolerance_and_a_pair_budget(self):
+        cli = os.environ["FLEET_PLANNER_CLI"]
+        with tempfile.TemporaryDirectory() as folder:
+            out = os.path.join(folder, "fleet.yaml")
+            base = [cli, "generate", "--map", os.path.join(ROOT, "test", "data", "open_12x8.map"), "--agents", "6",
+                    "--seed", "3", "--feasible", "--out", out]
+            run = subprocess.run(base + ["--sweep-tolerance", "0.2", "--pair-expansions", "100000"],
+                                 stdout=subprocess.PIPE, stderr=subprocess.PIPE, universal_newlines=True, timeout=120)
+            self.assertEqual(run.returncode, 0, run.stderr)
+            j = json.loads(run.stdout)
+            self.assertTrue(j["feasible_check"])
+            self.assertTrue(j["check_clean"], j)
+            with open(out) as f:
+                self.assertEqual(len(yaml.safe_load(f)["robots"]), 6)
+            for bad in (["--sweep-tolerance", "0.3"], ["--pair-expansions", "0"]):
+                run = subprocess.run(base + bad, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                                     universal_newlines=True, timeout=120)
+                self.assertEqual(run.returncode, 2, bad)
+                self.assertIn(bad[0], run.stderr + run.stdout)
+
 
 if __name__ == "__main__":
     unittest.main()

@@ -3,29 +3,49 @@
 /// measured on instances that have a plan). The paper's generator draws each robot's start and
 /// target alone, so two wide robots may block each other for good (one's target in the only
 /// corridor the other must cross): such instances are INFEASIBLE for every planner. Here, after
-/// generateInstance, every pair the decomposition finds entangled is tried with the pair proof
-/// (infeasible_pairs.h); the second robot of each pair proven unable to reach both targets is
-/// drawn again (footprint kept), and the check repeats until no entangled pair is proven so.
-/// "Not proven impossible" is not a proof of a plan, but it is what the planner checks.
+/// generateInstance, every pair the decomposition finds entangled is decided by the pair proof
+/// (infeasible_pairs.h, decidePair); the second robot of each pair that is not shown possible
+/// (proven impossible, or undecided within the budget) is drawn again (footprint kept), and the
+/// check repeats until every entangled pair is shown possible. The decomposition's entangled
+/// pairs include every pair that cannot both reach their targets alone (decomposition.h), so
+/// no two robots of a clean instance block each other for good; larger groups are not checked.
 #include <string>
 #include <vector>
 
 #include "fleet_planner/io/instance_generator.h"
+#include "fleet_planner/model/fleet_graphs.h"
 #include "fleet_planner/runtime/deadline.h"
 
 namespace fleet_planner {
+
+/// LA-LaCAM expansions of each pair proof of the check: pairs along a map's edge that only one
+/// of the two can pass take 2-3 million to decide on the 256 x 256 city maps.
+constexpr long long kGeneratorPairExpansions = 4'000'000;
 
 struct FeasibleGeneration {
   Instance instance;
   int rounds = 0;                   ///< checks made (1: the first draw had no proven pair)
   std::vector<std::string> redrawn;  ///< "robot '7' (with '12'): <the proof's message>", in order
-  bool clean = false;               ///< the last check proved no pair (false: rounds or time ran out)
+  bool clean = false;               ///< the last check showed every pair possible (false: rounds or time ran out)
 };
+
+/// One check of the generator: the second robot of each of `pairs` (instance indices, a < b)
+/// that decidePair (with `pair_expansions`) does not show possible, with the other robot and
+/// why; a pair one of whose robots is listed already is skipped. Pairs left when the deadline
+/// passes are not listed.
+struct PairToRedraw {
+  int robot = -1;  ///< drawn again
+  int other = -1;
+  std::string why;
+};
+std::vector<PairToRedraw> pairsToRedraw(const Instance& instance, const FleetGraphs& graphs,
+                                        const std::vector<std::pair<int, int>>& pairs, long long pair_expansions,
+                                        const Deadline& deadline);
 
 /// generateInstance(map, options) with the check above, at most `max_rounds` checks; each pair
 /// proof stops after `pair_expansions`. Deterministic when the deadline does not cut in. Throws
 /// InvalidInput like generateInstance, and when a robot cannot be drawn again.
 FeasibleGeneration generateFeasibleInstance(const GridMap& map, const GeneratorOptions& options, int max_rounds = 10,
-                                            long long pair_expansions = 500'000, const Deadline& deadline = {});
+                                            long long pair_expansions = kGeneratorPairExpansions, const Deadline& deadline = {});
 
 }  // namespace fleet_planner

@@ -39,6 +39,23 @@ SolveResult searchPairAlone(const Subproblem& around, int a, int b, long long ma
 SolveResult planPairInTurn(const Subproblem& around, int a, int b, long long max_expansions_per_search,
                            const Deadline& deadline);
 
+/// What the pair proof says of two robots alone on the map (the map's obstacles only).
+enum class PairVerdict {
+  Possible,    ///< a plan of the pair was found (planned in turn, forwards or backwards)
+  Impossible,  ///< every configuration explored (forwards or backwards): no plan
+  Undecided,   ///< the budget or the deadline ran out first
+};
+struct PairDecision {
+  PairVerdict verdict = PairVerdict::Undecided;
+  std::string why;  ///< for Impossible, the proof; for Undecided, what ran out
+};
+
+/// Robots a and b (instance indices) alone on the map: planned in turn first (cheap, and most
+/// pairs are possible), then searched backwards from their targets a little, forwards by
+/// LA-LaCAM for at most `max_expansions`, and backwards again for a million configurations.
+PairDecision decidePair(const Instance& instance, const FleetGraphs& graphs, int a, int b, long long max_expansions,
+                        const Deadline& deadline);
+
 /// The first of `pairs` (instance indices) proven unable to reach both targets, as a message
 /// naming both robots; nullopt if none is proven (a pair planned in turn is not searched
 /// further; each pair's forward search stops after

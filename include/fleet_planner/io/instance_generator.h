@@ -30,6 +30,11 @@ struct GeneratorOptions {
   double max_size = 2.0;          ///< largest circle radius / block half-extent (cells)
   double min_radius = 0.4;        ///< smallest circle radius (cells)
   double polygon_share = 0.0;     ///< chance that a non-circle robot is a polygon, in [0, 1]
+  /// The sweep tolerance (Footprint::sweep_tolerance) of the model the feasibility check
+  /// (feasible_instances.h) decides pairs in, and robots are drawn again in: that of the solves
+  /// the instance is made for. The first draw does not depend on it; the footprints written
+  /// carry none.
+  double check_sweep_tolerance = 0.0;
 };
 
 /// Robots alternate circle, block (or polygon), circle, ... and are named "0", "1", ... Throws InvalidInput

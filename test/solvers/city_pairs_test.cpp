@@ -1,0 +1,43 @@
+// The pair proof (infeasible_pairs.h, decidePair) on a pair of a generated city fleet (the map
+// read from ../shared when it is there): the verdicts it gives within a budget, and the budget
+// the generator's check needs for it.
+#include <gtest/gtest.h>
+
+#include "fleet_planner/infeasibility/infeasible_pairs.h"
+#include "solver_test_util.h"
+
+namespace fleet_planner::test {
+namespace {
+
+// Robots 399 and 481 of `generate --feasible --seed 1` with 500 robots on Berlin_1_256, as the
+// generator drew them with the 500,000 expansions of the planner's pair proofs. Both are blocks
+// on the map's bottom row that cannot turn off it (the edge is too close on one side of every
+// turn but the one they make at their ends): 399 must pass 481's start and target on its way
+// east, and 481 parks between them. LA-LaCAM explores every configuration of the pair in 0.5-2
+// million expansions (about 0.4 s), so the old budget left it undecided, and the pair stayed
+// in the "feasible" instance.
+TEST(PairProof, DecidesARailPairOfACityFleetWithinTheGeneratorsBudget) {
+#if defined(__SANITIZE_ADDRESS__)
+  GTEST_SKIP() << "millions of expansions: too slow under the sanitizers";
+#endif
+  const std::optional<GridMap> berlin = sharedBenchmarkMap("Berlin_1_256");
+  if (!berlin) GTEST_SKIP() << "no ../shared/benchmark";
+  const World w(*berlin, {makeRobot("399", Footprint::block(-1.7, -0.9, 1.1, 0.9), {113, 254, 2}, {226, 254, 0}),
+                          makeRobot("481", Footprint::block(-1.7, -0.8, 1.1, 0.8), {211, 254, 1}, {181, 254, 0})});
+  const PairDecision small = decidePair(w.instance, *w.graphs, 0, 1, 500'000, Deadline::in(120.0));
+  EXPECT_EQ(small.verdict, PairVerdict::Undecided) << small.why;
+  EXPECT_NE(small.why.find("500000 expansions"), std::string::npos) << small.why;
+  const PairDecision enough = decidePair(w.instance, *w.graphs, 0, 1, 4'000'000, Deadline::in(120.0));
+  EXPECT_EQ(enough.verdict, PairVerdict::Impossible) << enough.why;
+  EXPECT_TRUE(findInfeasiblePair(w.instance, *w.graphs, {{0, 1}}, 4'000'000, Deadline::in(120.0)).has_value());
+
+  // Either one alone gets home; moved off 399's way (481 between 230 and 242, east of 399's target), the
+  // pair is possible and said so at once, by planning the two in turn.
+  const World apart(*berlin, {makeRobot("399", Footprint::block(-1.7, -0.9, 1.1, 0.9), {113, 254, 2}, {226, 254, 0}),
+                              makeRobot("481", Footprint::block(-1.7, -0.8, 1.1, 0.8), {241, 254, 1}, {233, 254, 0})});
+  const PairDecision possible = decidePair(apart.instance, *apart.graphs, 0, 1, 500'000, Deadline::in(120.0));
+  EXPECT_EQ(possible.verdict, PairVerdict::Possible) << possible.why;
+}
+
+}  // namespace
+}  // namespace fleet_planner::test
