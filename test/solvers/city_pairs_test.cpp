@@ -3,7 +3,9 @@
 // the generator's check needs for it.
 #include <gtest/gtest.h>
 
+#include "fleet_planner/infeasibility/feasible_instances.h"
 #include "fleet_planner/infeasibility/infeasible_pairs.h"
+#include "fleet_planner/layered/time_budget.h"
 #include "solver_test_util.h"
 
 namespace fleet_planner::test {
@@ -15,8 +17,9 @@ namespace {
 // turn but the one they make at their ends): 399 must pass 481's start and target on its way
 // east, and 481 parks between them. LA-LaCAM explores every configuration of the pair in 0.5-2
 // million expansions (about 0.4 s), so the old budget left it undecided, and the pair stayed
-// in the "feasible" instance.
-TEST(PairProof, DecidesARailPairOfACityFleetWithinTheGeneratorsBudget) {
+// in the "feasible" instance, and the planner timed out on it. The generator's check and the
+// planner's pair proofs now have the budget for it.
+TEST(PairProof, DecidesARailPairOfACityFleetWithinTheGeneratorsAndThePlannersBudget) {
 #if defined(__SANITIZE_ADDRESS__)
   GTEST_SKIP() << "millions of expansions: too slow under the sanitizers";
 #endif
@@ -27,9 +30,11 @@ TEST(PairProof, DecidesARailPairOfACityFleetWithinTheGeneratorsBudget) {
   const PairDecision small = decidePair(w.instance, *w.graphs, 0, 1, 500'000, Deadline::in(120.0));
   EXPECT_EQ(small.verdict, PairVerdict::Undecided) << small.why;
   EXPECT_NE(small.why.find("500000 expansions"), std::string::npos) << small.why;
-  const PairDecision enough = decidePair(w.instance, *w.graphs, 0, 1, 4'000'000, Deadline::in(120.0));
+  const PairDecision enough = decidePair(w.instance, *w.graphs, 0, 1, kGeneratorPairExpansions, Deadline::in(120.0));
   EXPECT_EQ(enough.verdict, PairVerdict::Impossible) << enough.why;
-  EXPECT_TRUE(findInfeasiblePair(w.instance, *w.graphs, {{0, 1}}, 4'000'000, Deadline::in(120.0)).has_value());
+  EXPECT_TRUE(findInfeasiblePair(w.instance, *w.graphs, {{0, 1}}, TimeBudget{}.pair_proof_expansions,
+                                 Deadline::in(120.0))
+                  .has_value());
 
   // Either one alone gets home; moved off 399's way (481 between 230 and 242, east of 399's target), the
   // pair is possible and said so at once, by planning the two in turn.

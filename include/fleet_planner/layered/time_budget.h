@@ -26,7 +26,7 @@ struct TimeBudget {
   /// take before solving, and each failed subproblem's pairs after it fails; the LA-LaCAM
   /// expansions of each pair; the pairs tried per failure.
   double pair_proof_share = 0.1;
-  long long pair_proof_expansions = 500'000;
+  long long pair_proof_expansions = 4'000'000;
   std::size_t pairs_per_failure = 120;
   /// Serial backends: low-level expansions per robot a level may spend planning around the timed
   /// paths of its cluster's earlier levels before it is planned at their targets and delayed
