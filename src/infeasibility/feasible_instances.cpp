@@ -10,14 +10,14 @@ namespace fleet_planner {
 
 std::vector<PairToRedraw> pairsToRedraw(const Instance& instance, const FleetGraphs& graphs,
                                         const std::vector<std::pair<int, int>>& pairs, long long pair_expansions,
-                                        const Deadline& deadline) {
+                                        const Deadline& deadline, long long backward_configurations) {
   std::vector<PairToRedraw> out;
   std::vector<bool> taken(instance.robots.size(), false);
   for (const auto& [a, b] : pairs) {
     if (taken[a] || taken[b]) continue;
     // A pair not shown possible is drawn again as well as one proven impossible: the
     // instance is meant to have a plan, and an undecided pair may not.
-    const PairDecision decision = decidePair(instance, graphs, a, b, pair_expansions, deadline);
+    const PairDecision decision = decidePair(instance, graphs, a, b, pair_expansions, deadline, backward_configurations);
     if (decision.verdict == PairVerdict::Possible || deadline.expired()) continue;
     taken[b] = true;
     const std::string what = decision.verdict == PairVerdict::Impossible

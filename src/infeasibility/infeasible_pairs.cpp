@@ -12,8 +12,6 @@ namespace fleet_planner {
 
 namespace {
 
-// Joint configurations the backward search of a pair's goal may collect (about 40 bytes each).
-constexpr long long kBackwardConfigurations = 1'000'000;
 // The same for its first, short try: a pair whose targets leave it few configurations to reach
 // them from is decided by it at once, where the forward search may spend its whole budget
 // before failing.
@@ -65,7 +63,7 @@ SolveResult planPairInTurn(const Subproblem& around, int a, int b, long long max
 }
 
 PairDecision decidePair(const Instance& instance, const FleetGraphs& graphs, int a, int b, long long max_expansions,
-                        const Deadline& deadline) {
+                        const Deadline& deadline, long long backward_configurations) {
   Subproblem alone;  // the map's obstacles only
   alone.instance = &instance;
   alone.graphs = &graphs;
@@ -79,23 +77,20 @@ PairDecision decidePair(const Instance& instance, const FleetGraphs& graphs, int
     return "every configuration from which both can reach their targets explored, " +
            std::to_string(back.configurations) + " of them: their starts are not one";
   };
-  // Each backward search has a budget of its own, but not more than twice the forward one: a
-  // small budget stays small.
-  const PairSearch first = backwards(std::min(kFirstBackwardConfigurations, 2 * max_expansions));
+  const PairSearch first = backwards(std::min(kFirstBackwardConfigurations, backward_configurations));
   if (first.reach == PairReach::Reachable) return {PairVerdict::Possible, ""};
   if (first.reach == PairReach::Unreachable) return {PairVerdict::Impossible, unreachable(first)};
   const SolveResult r = searchPairAlone(alone, a, b, max_expansions, deadline);
   if (r.status == SolveStatus::Infeasible) return {PairVerdict::Impossible, r.reason};
   if (r.success()) return {PairVerdict::Possible, ""};
   // Forwards from the start the space was too large; backwards from the goal it may not be.
-  const long long back_budget = std::min(kBackwardConfigurations, 2 * max_expansions);
-  const PairSearch back = backwards(back_budget);
+  const PairSearch back = backwards(backward_configurations);
   if (back.reach == PairReach::Unreachable) return {PairVerdict::Impossible, unreachable(back)};
   if (back.reach == PairReach::Reachable) return {PairVerdict::Possible, ""};
   return {PairVerdict::Undecided, deadline.expired() ? "the deadline passed"
                                                      : "neither decided within " + std::to_string(max_expansions) +
                                                            " expansions forwards nor " +
-                                                           std::to_string(back_budget) +
+                                                           std::to_string(backward_configurations) +
                                                            " configurations backwards"};
 }
 

@@ -71,7 +71,8 @@ TEST(FeasibleInstances, ProvenPairsAreDrawnAgainUntilNoneIsLeft) {
 
 // Two one-cell robots trading the ends of a one-wide corridor: neither can go first, so the
 // pair is decided only by a search of both together. With a pocket halfway the pair is
-// possible, but a budget of ten expansions leaves it undecided: it is drawn again all the same.
+// possible, but a budget of ten expansions forwards and twenty configurations backwards leaves
+// it undecided: it is drawn again all the same.
 // Without the pocket it is impossible.
 TEST(FeasibleInstances, APairNotShownPossibleIsDrawnAgainAsWellAsAnImpossibleOne) {
   const std::vector<std::pair<int, int>> pair{{0, 1}};
@@ -79,7 +80,7 @@ TEST(FeasibleInstances, APairNotShownPossibleIsDrawnAgainAsWellAsAnImpossibleOne
     Instance in;
     in.robots = {dot("a", {0, 0, 0}, {13, 0, 0}), dot("b", {13, 0, 1}, {0, 0, 1})};
     const FleetGraphs graphs(map, footprintsOf(in));
-    return pairsToRedraw(in, graphs, pair, expansions, Deadline::in(30.0));
+    return pairsToRedraw(in, graphs, pair, expansions, Deadline::in(30.0), 2 * expansions);
   };
   const GridMap pocket = mapFromRows({"..............", "@@@@@@.@@@@@@@"});
   EXPECT_TRUE(check(pocket, 500'000).empty()) << "shown possible: kept";

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "fleet_planner/infeasibility/infeasible_pairs.h"
 #include "fleet_planner/io/instance_generator.h"
 #include "fleet_planner/model/fleet_graphs.h"
 #include "fleet_planner/runtime/deadline.h"
@@ -30,9 +31,9 @@ struct FeasibleGeneration {
 };
 
 /// One check of the generator: the second robot of each of `pairs` (instance indices, a < b)
-/// that decidePair (with `pair_expansions`) does not show possible, with the other robot and
-/// why; a pair one of whose robots is listed already is skipped. Pairs left when the deadline
-/// passes are not listed.
+/// that decidePair (with `pair_expansions` and `backward_configurations`) does not show
+/// possible, with the other robot and why; a pair one of whose robots is listed already is
+/// skipped. Pairs left when the deadline passes are not listed.
 struct PairToRedraw {
   int robot = -1;  ///< drawn again
   int other = -1;
@@ -40,7 +41,8 @@ struct PairToRedraw {
 };
 std::vector<PairToRedraw> pairsToRedraw(const Instance& instance, const FleetGraphs& graphs,
                                         const std::vector<std::pair<int, int>>& pairs, long long pair_expansions,
-                                        const Deadline& deadline);
+                                        const Deadline& deadline,
+                                        long long backward_configurations = kPairBackwardConfigurations);
 
 /// generateInstance(map, options) with the check above, at most `max_rounds` checks; each pair
 /// proof stops after `pair_expansions`. Deterministic when the deadline does not cut in. Throws

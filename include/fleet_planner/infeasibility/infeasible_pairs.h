@@ -50,11 +50,16 @@ struct PairDecision {
   std::string why;  ///< for Impossible, the proof; for Undecided, what ran out
 };
 
+/// Joint configurations the backward search of a pair's goal may collect (about 40 bytes each).
+constexpr long long kPairBackwardConfigurations = 1'000'000;
+
 /// Robots a and b (instance indices) alone on the map: planned in turn first (cheap, and most
 /// pairs are possible), then searched backwards from their targets a little, forwards by
-/// LA-LaCAM for at most `max_expansions`, and backwards again for a million configurations.
+/// LA-LaCAM for at most `max_expansions`, and backwards again for at most
+/// `backward_configurations` configurations.
 PairDecision decidePair(const Instance& instance, const FleetGraphs& graphs, int a, int b, long long max_expansions,
-                        const Deadline& deadline);
+                        const Deadline& deadline,
+                        long long backward_configurations = kPairBackwardConfigurations);
 
 /// The first of `pairs` (instance indices) proven unable to reach both targets, as a message
 /// naming both robots; nullopt if none is proven (a pair planned in turn is not searched
