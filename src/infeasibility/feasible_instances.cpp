@@ -11,20 +11,48 @@ namespace fleet_planner {
 std::vector<PairToRedraw> pairsToRedraw(const Instance& instance, const FleetGraphs& graphs,
                                         const std::vector<std::pair<int, int>>& pairs, long long pair_expansions,
                                         const Deadline& deadline, long long backward_configurations) {
-  std::vector<PairToRedraw> out;
-  std::vector<bool> taken(instance.robots.size(), false);
+  // The pairs not shown possible: proven impossible, or undecided (the instance is meant to
+  // have a plan, and an undecided pair may not).
+  struct Bad {
+    int a, b;
+    std::string why;
+  };
+  std::vector<Bad> bad;
   for (const auto& [a, b] : pairs) {
-    if (taken[a] || taken[b]) continue;
-    // A pair not shown possible is drawn again as well as one proven impossible: the
-    // instance is meant to have a plan, and an undecided pair may not.
     const PairDecision decision = decidePair(instance, graphs, a, b, pair_expansions, deadline, backward_configurations);
-    if (decision.verdict == PairVerdict::Possible || deadline.expired()) continue;
-    taken[b] = true;
+    if (deadline.expired()) break;
+    if (decision.verdict == PairVerdict::Possible) continue;
     const std::string what = decision.verdict == PairVerdict::Impossible
                                  ? "cannot both reach their targets, even alone on the map"
                                  : "are not shown able to both reach their targets";
-    out.push_back({b, a, "robots '" + instance.robots[a].id + "' and '" + instance.robots[b].id + "' " + what +
+    bad.push_back({a, b, "robots '" + instance.robots[a].id + "' and '" + instance.robots[b].id + "' " + what +
                              " (" + decision.why + ")"});
+  }
+  // The robots drawn again cover those pairs: the robot in most pairs left first (a robot whose
+  // start or target blocks several others is drawn again, not each of them), ties to the
+  // higher index (the second of a pair).
+  std::vector<PairToRedraw> out;
+  std::vector<bool> covered(bad.size(), false);
+  for (;;) {
+    std::vector<int> count(instance.robots.size(), 0);
+    for (std::size_t k = 0; k < bad.size(); ++k) {
+      if (covered[k]) continue;
+      ++count[bad[k].a];
+      ++count[bad[k].b];
+    }
+    int robot = -1;
+    for (int r = 0; r < static_cast<int>(count.size()); ++r) {
+      if (count[r] > 0 && (robot < 0 || count[r] >= count[robot])) robot = r;
+    }
+    if (robot < 0) break;
+    bool named = false;
+    for (std::size_t k = 0; k < bad.size(); ++k) {
+      if (covered[k] || (bad[k].a != robot && bad[k].b != robot)) continue;
+      covered[k] = true;
+      if (named) continue;
+      out.push_back({robot, bad[k].a == robot ? bad[k].b : bad[k].a, bad[k].why});
+      named = true;
+    }
   }
   return out;
 }

@@ -95,5 +95,21 @@ TEST(FeasibleInstances, APairNotShownPossibleIsDrawnAgainAsWellAsAnImpossibleOne
   EXPECT_NE(impossible[0].why.find("cannot both reach their targets"), std::string::npos) << impossible[0].why;
 }
 
+// On a one-wide line, "x" drives west past "a" and "b", which drive east one behind the other:
+// x cannot reach its target with either of them, a and b can with each other. x alone is drawn
+// again, though it is the first of both pairs (the second robot of each pair was drawn before,
+// a and b both).
+TEST(FeasibleInstances, ARobotInSeveralImpossiblePairsIsDrawnAgainOnce) {
+  const GridMap line = mapFromRows({"............"});
+  Instance in;
+  in.robots = {dot("x", {11, 0, 1}, {2, 0, 1}), dot("a", {0, 0, 0}, {9, 0, 0}), dot("b", {1, 0, 0}, {10, 0, 0})};
+  const FleetGraphs graphs(line, footprintsOf(in));
+  const std::vector<PairToRedraw> redraw = pairsToRedraw(in, graphs, {{0, 1}, {0, 2}, {1, 2}}, 500'000, Deadline::in(30.0));
+  ASSERT_EQ(redraw.size(), 1u);
+  EXPECT_EQ(redraw[0].robot, 0);
+  EXPECT_EQ(redraw[0].other, 1);
+  EXPECT_NE(redraw[0].why.find("cannot both reach their targets"), std::string::npos) << redraw[0].why;
+}
+
 }  // namespace
 }  // namespace fleet_planner::test

@@ -4,9 +4,10 @@
 /// target alone, so two wide robots may block each other for good (one's target in the only
 /// corridor the other must cross): such instances are INFEASIBLE for every planner. Here, after
 /// generateInstance, every pair the decomposition finds entangled is decided by the pair proof
-/// (infeasible_pairs.h, decidePair); the second robot of each pair that is not shown possible
-/// (proven impossible, or undecided within the budget) is drawn again (footprint kept), and the
-/// check repeats until every entangled pair is shown possible. The decomposition's entangled
+/// (infeasible_pairs.h, decidePair); a robot of each pair that is not shown possible
+/// (proven impossible, or undecided within the budget) is drawn again (footprint kept; a robot
+/// in several such pairs once for all of them), and the check repeats until every entangled
+/// pair is shown possible. The decomposition's entangled
 /// pairs include every pair that cannot both reach their targets alone (decomposition.h), so
 /// no two robots of a clean instance block each other for good; larger groups are not checked.
 #include <string>
@@ -30,10 +31,11 @@ struct FeasibleGeneration {
   bool clean = false;               ///< the last check showed every pair possible (false: rounds or time ran out)
 };
 
-/// One check of the generator: the second robot of each of `pairs` (instance indices, a < b)
+/// One check of the generator: robots to draw again so that each of `pairs` (instance indices)
 /// that decidePair (with `pair_expansions` and `backward_configurations`) does not show
-/// possible, with the other robot and why; a pair one of whose robots is listed already is
-/// skipped. Pairs left when the deadline passes are not listed.
+/// possible loses one of its robots, the robot in most such pairs first (ties: the higher
+/// index); each with the other robot of its first such pair and why. Pairs left when the
+/// deadline passes are not decided.
 struct PairToRedraw {
   int robot = -1;  ///< drawn again
   int other = -1;
