@@ -7,9 +7,9 @@
 /// (infeasible_pairs.h, decidePair); a robot of each pair that is not shown possible
 /// (proven impossible, or undecided within the budget) is drawn again (footprint kept; a robot
 /// in several such pairs once for all of them), and the check repeats until every entangled
-/// pair is shown possible. The decomposition's entangled
-/// pairs include every pair that cannot both reach their targets alone (decomposition.h), so
-/// no two robots of a clean instance block each other for good; larger groups are not checked.
+/// pair is shown possible. The decomposition's entangled pairs include every pair that cannot
+/// both reach their targets alone (decomposition.h), so no two robots of a clean instance block
+/// each other for good; larger groups are not checked.
 #include <string>
 #include <vector>
 
@@ -31,16 +31,17 @@ struct FeasibleGeneration {
   bool clean = false;               ///< the last check showed every pair possible (false: rounds or time ran out)
 };
 
-/// One check of the generator: robots to draw again so that each of `pairs` (instance indices)
-/// that decidePair (with `pair_expansions` and `backward_configurations`) does not show
-/// possible loses one of its robots, the robot in most such pairs first (ties: the higher
-/// index); each with the other robot of its first such pair and why. Pairs left when the
-/// deadline passes are not decided.
+/// A robot to draw again, the other robot of its first pair not shown possible, and why.
 struct PairToRedraw {
-  int robot = -1;  ///< drawn again
+  int robot = -1;
   int other = -1;
   std::string why;
 };
+
+/// One check of the generator: robots to draw again so that each of `pairs` (instance indices)
+/// that decidePair (with `pair_expansions` and `backward_configurations`) does not show
+/// possible loses one of its robots, the robot in most such pairs first (ties: the higher
+/// index). Pairs left when the deadline passes are not decided.
 std::vector<PairToRedraw> pairsToRedraw(const Instance& instance, const FleetGraphs& graphs,
                                         const std::vector<std::pair<int, int>>& pairs, long long pair_expansions,
                                         const Deadline& deadline,
