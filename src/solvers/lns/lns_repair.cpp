@@ -9,6 +9,7 @@
 #include "fleet_planner/solvers/lns/path_splice.h"
 #include "fleet_planner/solvers/lns/pocket_repair.h"
 #include "fleet_planner/solvers/search/joint_path_search.h"
+#include "fleet_planner/solvers/search/safe_interval_search.h"
 #include "fleet_planner/solvers/search/solve_common.h"
 #include "lns_search.h"
 
@@ -117,9 +118,7 @@ bool LnsSearch::planTogetherLater(const std::vector<int>& group, JointSearchOpti
   // Leads of a few dozen steps: enough to make way for each other, few enough to search. At
   // each, the members where their paths have them then, and then each member instead held at
   // its start until then: a robot that drove into a place it cannot leave (a target at a wall
-  // it cannot turn at) must wait for the other where it stood. Steps after the last agent
-  // near the group stops are merged (stillNear): robots far away that drive on for long
-  // would otherwise make every step of a wait a state of its own.
+  // it cannot turn at) must wait for the other where it stood.
   for (const int lead : {kLaterLead, 4 * kLaterLead}) {
     const int t0 = met->t - lead;
     if (t0 <= 0) return false;
@@ -129,21 +128,47 @@ bool LnsSearch::planTogetherLater(const std::vector<int>& group, JointSearchOpti
       options.from.clear();
       for (int k = 0; k < n; ++k) options.from.push_back(stateAt(before[group[k]], k == held ? 0 : t0));
       options.from_step = t0;
-      options.static_from = stillNear(group, options.from, t0, lead);
-      const JointSearchResult r = jointPathSearch(space_, group, table_, problem_.deadline, options);
-      stats_.low_level_expansions += r.expansions;
-      if (r.outcome == JointSearchResult::Outcome::Expired) return false;
-      if (r.outcome != JointSearchResult::Outcome::Found) continue;
-      for (int k = 0; k < n; ++k) {
-        StatePath path;
-        for (int t = 0; t < t0; ++t) path.push_back(stateAt(before[group[k]], k == held ? 0 : t));
-        path.insert(path.end(), r.paths[k].begin(), r.paths[k].end());
-        table_.insert(group[k], path);
+      // First with every step after t0 merged (JointSearchOptions::static_from): the members'
+      // configurations, each at its earliest step, few enough to search however long the
+      // others drive on nearby; a member cannot wait there for another robot to pass, but each
+      // collision still counts at its true step, and the repairs after this one take up what
+      // it leaves. Then merged only after the last agent near the group stops (stillNear),
+      // where such waits are states of their own.
+      std::vector<int> merged_from{t0 + 1};
+      const int near = stillNear(group, options.from, t0, lead);
+      if (near > t0 + 1) merged_from.push_back(near);
+      for (const int static_from : merged_from) {
+        options.static_from = static_from;
+        const JointSearchResult r = jointPathSearch(space_, group, table_, problem_.deadline, options);
+        stats_.low_level_expansions += r.expansions;
+        if (r.outcome == JointSearchResult::Outcome::Expired) return false;
+        if (r.outcome != JointSearchResult::Outcome::Found) continue;
+        const StatePath prefix = held >= 0 ? heldPrefix(group[held], t0) : StatePath{};
+        for (int k = 0; k < n; ++k) {
+          StatePath path;
+          for (int t = 0; t < t0; ++t) path.push_back(stateAt(k == held ? prefix : before[group[k]], t));
+          path.insert(path.end(), r.paths[k].begin(), r.paths[k].end());
+          table_.insert(group[k], path);
+        }
+        return true;
       }
-      return true;
     }
   }
   return false;
+}
+
+// Agent a's way from its start at step 0 back to it by step t0, held there until t0, around the
+// agents in the table (the group's members are not in it while it is repaired): a member held
+// at its start for the later search still makes way for the robots that pass it before t0
+// (those that leave from beside it, those that drive past it to their targets). Standing at
+// its start throughout if there is no such way.
+StatePath LnsSearch::heldPrefix(int a, int t0) {
+  const StateId start = joint_before_[a][0];
+  const SafeIntervalResult r = safeIntervalSegment(space_, a, table_, start, 0, start, t0, 0, problem_.deadline,
+                                                   options_.max_expansions_per_search);
+  stats_.low_level_expansions += r.expansions;
+  if (r.outcome == SafeIntervalResult::Outcome::Found) return r.path;
+  return StatePath{start};
 }
 
 // LA-LaCAM's search over the group's configurations unties knots of two or three robots in

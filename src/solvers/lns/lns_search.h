@@ -110,6 +110,9 @@ class LnsSearch {
   // The step after which no agent outside the group comes near it (JointSearchOptions::static_from):
   // within lead + 8 moves of the box around the members' states `at` and their targets.
   int stillNear(const std::vector<int>& group, const std::vector<StateId>& at, int t0, int lead) const;
+  // A held member's path before the later search (steps 0..t0-1 at least): to its start and
+  // back around the others, or standing there.
+  StatePath heldPrefix(int a, int t0);
 
   // The group alone among the static obstacles by LA-LaCAM, its paths put in the table (soft
   // towards the others); false if it found none or the subproblem has moving obstacles.
