@@ -48,6 +48,7 @@ void LaLns::configure(const BackendOptionValues& values) {
   bind.number("heuristic_weight", o.heuristic_weight, 1, 100);
   bind.integer("joint_size", o.joint_size, 2, 16);
   bind.integer("joint_search_nodes", o.joint_search_nodes, 0, kMaxCount);
+  bind.integer("joint_search_pairs", o.joint_search_pairs, 0, 1000000);
   bind.number("joint_seconds", o.joint_seconds, 0, 1e6);
   bind.integer("joint_max_expansions", o.joint_max_expansions, 0, kMaxCount);
   bind.integer("pair_proof_expansions", o.pair_proof_expansions, 0, kMaxCount);

@@ -35,7 +35,10 @@ bool LnsSearch::planOneByOne(const std::vector<int>& group) {
 // joint search that exhausts the group's joint space proves that the subproblem has no plan
 // (proof_). The joint search waits for the deep stall because it costs time the repair needs:
 // run at every joint step, its budget spent 4-5 s of the 7 s that LA-LNS had for a 12-robot
-// level of maze-128-128-10 K=40, which it otherwise solves in that time.
+// level of maze-128-128-10 K=40, which it otherwise solves in that time. In a large
+// subproblem it also runs once per group and number of colliding pairs when at most
+// joint_search_pairs pairs are left: the neighbourhood of a 79-robot level never grew to all
+// of it before its time ran out, while its last knot needed the joint search.
 bool LnsSearch::planTogether(const std::vector<int>& group) {
   for (const std::vector<int>& order : {group, std::vector<int>(group.rbegin(), group.rend())}) {
     const std::optional<std::vector<StatePath>> paths =
@@ -53,7 +56,13 @@ bool LnsSearch::planTogether(const std::vector<int>& group) {
   for (std::size_t k = 0; k < paths.size(); ++k) table_.insert(group[k], paths[k]);
   if (!paths.empty()) return true;
   if (planAlone(group, seconds)) return true;
-  if (static_cast<int>(group.size()) > kMaxJointGroup || size_ < n_) return false;
+  if (static_cast<int>(group.size()) > kMaxJointGroup) return false;
+  if (size_ < n_) {
+    std::vector<int> key = group;
+    std::sort(key.begin(), key.end());
+    const int pairs = collidingPairs();
+    if (pairs > options_.joint_search_pairs || !joint_tried_.insert({key, pairs}).second) return false;
+  }
   JointSearchOptions o;
   o.collision_cost = options_.collision_cost;
   o.max_nodes = options_.joint_search_nodes;

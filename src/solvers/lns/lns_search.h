@@ -97,7 +97,10 @@ class LnsSearch {
   // joint search that exhausts the group's joint space proves that the subproblem has no plan
   // (proof_). The joint search waits for the deep stall because it costs time the repair needs:
   // run at every joint step, its budget spent 4-5 s of the 7 s that LA-LNS had for a 12-robot
-  // level of maze-128-128-10 K=40, which it otherwise solves in that time.
+  // level of maze-128-128-10 K=40, which it otherwise solves in that time. In a large
+  // subproblem it also runs once per group and number of colliding pairs when at most
+  // joint_search_pairs pairs are left: the neighbourhood of a 79-robot level never grew to all
+  // of it before its time ran out, while its last knot needed the joint search.
   bool planTogether(const std::vector<int>& group);
 
   // The group's joint search started later (JointSearchOptions::from): its members keep their
@@ -163,6 +166,7 @@ class LnsSearch {
   std::vector<int> proof_culprits_;   // the robots of that proof (instance indices)
   std::set<std::pair<int, int>> pairs_tried_;  // by provePair
   std::map<std::vector<int>, int> pocket_failures_;  // by planThroughPocket, per sorted group
+  std::set<std::pair<std::vector<int>, int>> joint_tried_;
   NeighborhoodGrowth growth_;
   int size_ = 0;                    // agents in this repair's neighbourhood (growth_)
   std::array<double, kMethods> weights_;

@@ -66,6 +66,11 @@ struct LaLnsOptions {
   /// storing at most this many joint states (see JointSearchOptions::max_nodes for its cost).
   int joint_size = 3;
   long long joint_search_nodes = 50'000;
+  /// The joint search also before the neighbourhood has grown to the whole subproblem, once per
+  /// group and number of colliding pairs, when at most this many pairs collide: the knot left
+  /// at the end of a large subproblem, which its neighbourhood would take too many repairs to
+  /// grow to (0: only at the whole subproblem).
+  int joint_search_pairs = 3;
   double joint_seconds = 0.5;
   long long joint_max_expansions = 100'000;
   /// Where the joint search finds nothing, each pair of the group is tried alone among the
