@@ -3,6 +3,9 @@
 // plan goes through the independent validator.
 #include <gtest/gtest.h>
 
+#include <stdexcept>
+#include <string>
+
 #include "fleet_planner/solvers/lns/la_lns.h"
 #include "fleet_planner/solvers/registry.h"
 #include "solver_test_util.h"
@@ -30,6 +33,30 @@ TEST(LaLns, TakesTheJointRepairAtOnceForTwoRobots) {
   }
 }
 
+// Robots of the knot of `generate --feasible --sweep-tolerance 0.2 --seed 1` with 300 robots on
+// Paris_1_256, as that fleet has them, in the benchmark's sweep tolerance (docs/benchmarking.md).
+Robot parisRobot(const std::string& id) {
+  struct Drawn {
+    const char* id;
+    Footprint footprint;
+    GridPose start, target;
+  };
+  static const Drawn kDrawn[] = {
+      {"25", Footprint::block(-0.8, -0.4, 0.8, 0.4), {3, 159, 1}, {241, 5, 0}},
+      {"60", Footprint::circle(1.1), {74, 140, 1}, {231, 3, 2}},
+      {"95", Footprint::block(-1.9, -2, 1.3, 2), {231, 2, 0}, {226, 2, 1}},
+      {"112", Footprint::circle(0.6), {245, 4, 3}, {223, 179, 2}},
+      {"227", Footprint::block(-0.8, -0.3, 1, 0.3), {208, 44, 1}, {222, 246, 1}},
+      {"293", Footprint::block(-1.3, -1.4, 1.3, 1.4), {220, 92, 3}, {245, 5, 0}}};
+  for (const Drawn& d : kDrawn) {
+    if (id != d.id) continue;
+    Footprint f = d.footprint;
+    f.sweep_tolerance = 0.2;
+    return makeRobot(id, f, d.start, d.target);
+  }
+  throw std::invalid_argument("no robot " + id + " in the knot");
+}
+
 // Robots 95 and 60 of `generate --feasible --seed 1` with 300 robots on Paris_1_256 (read from
 // ../shared when it is there), alone. The wide block starts at the map's top edge on the
 // circle's target and, once at its own target, can never leave it (a wall ahead, no room to
@@ -40,10 +67,7 @@ TEST(LaLns, TakesTheJointRepairAtOnceForTwoRobots) {
 TEST(LaLns, UntiesAKnotFarFromTheStartsByAJointSearchStartedLater) {
   const std::optional<GridMap> paris = sharedBenchmarkMap("Paris_1_256");
   if (!paris) GTEST_SKIP() << "no ../shared/benchmark";
-  Footprint wide = Footprint::block(-1.9, -2, 1.3, 2), round = Footprint::circle(1.1);
-  wide.sweep_tolerance = round.sweep_tolerance = 0.2;  // the benchmark's (docs/benchmarking.md)
-  const World w(*paris, {makeRobot("95", wide, {231, 2, 0}, {226, 2, 1}),
-                         makeRobot("60", round, {74, 140, 1}, {231, 3, 2})});
+  const World w(*paris, {parisRobot("95"), parisRobot("60")});
   Subproblem sub = allRobots(w, 300.0);  // the expansions decide, not the machine
   sub.max_expansions = 5'000'000;
   const Outcome o = solveWith("la_lns", w, sub);
@@ -62,13 +86,7 @@ TEST(LaLns, UntiesAKnotOfFourWhereRobotsFarAwayDriveOnForLong) {
 #endif
   const std::optional<GridMap> paris = sharedBenchmarkMap("Paris_1_256");
   if (!paris) GTEST_SKIP() << "no ../shared/benchmark";
-  Footprint wide = Footprint::block(-1.9, -2, 1.3, 2), round = Footprint::circle(1.1);
-  Footprint small = Footprint::circle(0.6), square = Footprint::block(-1.3, -1.4, 1.3, 1.4);
-  for (Footprint* f : {&wide, &round, &small, &square}) f->sweep_tolerance = 0.2;
-  const World w(*paris, {makeRobot("60", round, {74, 140, 1}, {231, 3, 2}),
-                         makeRobot("95", wide, {231, 2, 0}, {226, 2, 1}),
-                         makeRobot("112", small, {245, 4, 3}, {223, 179, 2}),
-                         makeRobot("293", square, {220, 92, 3}, {245, 5, 0})});
+  const World w(*paris, {parisRobot("60"), parisRobot("95"), parisRobot("112"), parisRobot("293")});
   Subproblem sub = allRobots(w, 300.0, 0);  // the expansions decide, not the machine
   sub.max_expansions = 16'000'000;
   const Outcome o = solveWith("la_lns", w, sub);
@@ -85,12 +103,7 @@ TEST(LaLns, UntiesAKnotOfFourWhereRobotsFarAwayDriveOnForLong) {
 TEST(LaLns, UntiesAKnotNearWhichAnotherRobotArrivesLast) {
   const std::optional<GridMap> paris = sharedBenchmarkMap("Paris_1_256");
   if (!paris) GTEST_SKIP() << "no ../shared/benchmark";
-  Footprint wide = Footprint::block(-1.9, -2, 1.3, 2), round = Footprint::circle(1.1);
-  Footprint thin = Footprint::block(-0.8, -0.4, 0.8, 0.4);
-  for (Footprint* f : {&wide, &round, &thin}) f->sweep_tolerance = 0.2;
-  const World w(*paris, {makeRobot("25", thin, {3, 159, 1}, {241, 5, 0}),
-                         makeRobot("60", round, {74, 140, 1}, {231, 3, 2}),
-                         makeRobot("95", wide, {231, 2, 0}, {226, 2, 1})});
+  const World w(*paris, {parisRobot("25"), parisRobot("60"), parisRobot("95")});
   Subproblem sub = allRobots(w, 300.0, 0);  // the expansions decide, not the machine
   sub.max_expansions = 2'500'000;
   const Outcome o = solveWith("la_lns", w, sub);
@@ -109,13 +122,7 @@ TEST(LaLns, TakesTheJointSearchForTheLastPairsOfASubproblemLargerThanItsNeighbou
 #endif
   const std::optional<GridMap> paris = sharedBenchmarkMap("Paris_1_256");
   if (!paris) GTEST_SKIP() << "no ../shared/benchmark";
-  Footprint wide = Footprint::block(-1.9, -2, 1.3, 2), round = Footprint::circle(1.1);
-  Footprint thin = Footprint::block(-0.8, -0.4, 0.8, 0.4), square = Footprint::block(-1.3, -1.4, 1.3, 1.4);
-  for (Footprint* f : {&wide, &round, &thin, &square}) f->sweep_tolerance = 0.2;
-  const World w(*paris, {makeRobot("25", thin, {3, 159, 1}, {241, 5, 0}),
-                         makeRobot("60", round, {74, 140, 1}, {231, 3, 2}),
-                         makeRobot("95", wide, {231, 2, 0}, {226, 2, 1}),
-                         makeRobot("293", square, {220, 92, 3}, {245, 5, 0})});
+  const World w(*paris, {parisRobot("25"), parisRobot("60"), parisRobot("95"), parisRobot("293")});
   LaLnsOptions options;
   options.neighborhood_size = 2;
   LaLns solver(options);
@@ -136,16 +143,8 @@ TEST(LaLns, UntiesASixRobotKnotWhoseHeldRobotMakesWayBeforeTheSearch) {
 #endif
   const std::optional<GridMap> paris = sharedBenchmarkMap("Paris_1_256");
   if (!paris) GTEST_SKIP() << "no ../shared/benchmark";
-  Footprint wide = Footprint::block(-1.9, -2, 1.3, 2), round = Footprint::circle(1.1);
-  Footprint small = Footprint::circle(0.6), square = Footprint::block(-1.3, -1.4, 1.3, 1.4);
-  Footprint thin = Footprint::block(-0.8, -0.4, 0.8, 0.4), bar = Footprint::block(-0.8, -0.3, 1, 0.3);
-  for (Footprint* f : {&wide, &round, &small, &square, &thin, &bar}) f->sweep_tolerance = 0.2;
-  const World w(*paris, {makeRobot("25", thin, {3, 159, 1}, {241, 5, 0}),
-                         makeRobot("60", round, {74, 140, 1}, {231, 3, 2}),
-                         makeRobot("95", wide, {231, 2, 0}, {226, 2, 1}),
-                         makeRobot("112", small, {245, 4, 3}, {223, 179, 2}),
-                         makeRobot("227", bar, {208, 44, 1}, {222, 246, 1}),
-                         makeRobot("293", square, {220, 92, 3}, {245, 5, 0})});
+  const World w(*paris, {parisRobot("25"), parisRobot("60"), parisRobot("95"), parisRobot("112"),
+                         parisRobot("227"), parisRobot("293")});
   Subproblem sub = allRobots(w, 300.0, 0);
   sub.max_expansions = 10'000'000;
   const Outcome o = solveWith("la_lns", w, sub);
