@@ -37,8 +37,8 @@ bool LnsSearch::planOneByOne(const std::vector<int>& group) {
 // run at every joint step, its budget spent 4-5 s of the 7 s that LA-LNS had for a 12-robot
 // level of maze-128-128-10 K=40, which it otherwise solves in that time. In a large
 // subproblem it also runs once per group and number of colliding pairs when at most
-// joint_search_pairs pairs are left: the neighbourhood of a 79-robot level never grew to all
-// of it before its time ran out, while its last knot needed the joint search.
+// joint_search_pairs pairs are left: a large subproblem's neighbourhood may never grow to all
+// of it before its time runs out, while the knot left at its end needs the joint search.
 bool LnsSearch::planTogether(const std::vector<int>& group) {
   for (const std::vector<int>& order : {group, std::vector<int>(group.rbegin(), group.rend())}) {
     const std::optional<std::vector<StatePath>> paths =

@@ -99,8 +99,8 @@ class LnsSearch {
   // run at every joint step, its budget spent 4-5 s of the 7 s that LA-LNS had for a 12-robot
   // level of maze-128-128-10 K=40, which it otherwise solves in that time. In a large
   // subproblem it also runs once per group and number of colliding pairs when at most
-  // joint_search_pairs pairs are left: the neighbourhood of a 79-robot level never grew to all
-  // of it before its time ran out, while its last knot needed the joint search.
+  // joint_search_pairs pairs are left: a large subproblem's neighbourhood may never grow to all
+  // of it before its time runs out, while the knot left at its end needs the joint search.
   bool planTogether(const std::vector<int>& group);
 
   // The group's joint search started later (JointSearchOptions::from): its members keep their
@@ -166,6 +166,8 @@ class LnsSearch {
   std::vector<int> proof_culprits_;   // the robots of that proof (instance indices)
   std::set<std::pair<int, int>> pairs_tried_;  // by provePair
   std::map<std::vector<int>, int> pocket_failures_;  // by planThroughPocket, per sorted group
+  // by planTogether: (sorted group, colliding pairs) searched jointly before the neighbourhood
+  // held the whole subproblem, each once
   std::set<std::pair<std::vector<int>, int>> joint_tried_;
   NeighborhoodGrowth growth_;
   int size_ = 0;                    // agents in this repair's neighbourhood (growth_)
