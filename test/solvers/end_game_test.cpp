@@ -76,6 +76,27 @@ TEST(EndGame, AnswersNoneWhereTheRobotsLeftCannotPass) {
   EXPECT_FALSE(finish(space, sub, {{space.start(0)}, {space.start(1)}}, {0, 0}).has_value());
 }
 
+TEST(EndGame, DoesNotPlanTheSameGroupAgain) {
+  // The corridor without a pocket: nobody else stands near the ways, so the rounds after the
+  // first would add nobody to the group of the first, whose plan fails (proven).
+  const World w(mapFromRows({"..............", "@@@@@@@@@@@@@@"}),
+                {dot("a", {0, 0, 0}, {13, 0, 0}), dot("b", {13, 0, 2}, {0, 0, 2})});
+  const Subproblem sub = allRobots(w);
+  const SearchSpace space(sub);
+  const std::vector<StatePath> parked = {{space.start(0)}, {space.start(1)}};
+  auto spent = [&](int rounds) {
+    EndGameOptions options;
+    options.rounds = rounds;
+    long long expansions = 0;
+    EXPECT_FALSE(endGame(space, sub, parked, {0, 0}, LaLnsOptions{}, Deadline::in(5.0), options, expansions)
+                     .has_value());
+    return expansions;
+  };
+  const long long one_round = spent(1);
+  EXPECT_GT(one_round, 0);
+  EXPECT_EQ(spent(EndGameOptions{}.rounds), one_round);
+}
+
 TEST(EndGame, TakesTheWayHomeThroughFewestStandingRobots) {
   // Two streets: "a" left on the short one would pass b and c, parked at their targets there;
   // the long one is empty. Only a is to move.

@@ -145,6 +145,7 @@ std::optional<std::vector<StatePath>> endGame(const SearchSpace& space, const Su
   }
   std::sort(near.begin(), near.end());
   std::size_t taken = 0;
+  std::size_t last_group = 0;  // robots of the last round planned (0: none yet)
   for (int round = 0; round < options.rounds && !deadline.expired(); ++round) {
     // Round r takes the robots within margin x (2^r - 1) cells of the ways; in a crowd, the
     // nearest of them up to max_group.
@@ -155,6 +156,11 @@ std::optional<std::vector<StatePath>> endGame(const SearchSpace& space, const Su
       group.push_back(near[taken++].second);
     }
     if (static_cast<int>(group.size()) > options.max_group) return std::nullopt;
+    // A round that adds nobody would plan the group of the round before again, with the same
+    // seed and about as much time: it would fail the same way. Its time is left to the rounds
+    // after it, or to the repairs after the end game.
+    if (group.size() == last_group) continue;
+    last_group = group.size();
     Subproblem sub;
     sub.instance = &instance;
     sub.graphs = problem.graphs;

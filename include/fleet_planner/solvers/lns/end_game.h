@@ -26,7 +26,8 @@ struct EndGameOptions {
   /// Rounds of the group: the robots left and those standing on their ways home (each the way
   /// through fewest standing robots); then each round also the robots standing near those
   /// ways, within `margin` lattice steps after the first round, the margin doubling each round
-  /// (8, 24, 56 steps in all), nearest first while the group holds fewer than `max_group`.
+  /// (8, 24, 56 steps in all), nearest first while the group holds fewer than `max_group`. A
+  /// round that would add nobody is skipped: it would plan the same group again.
   int rounds = 4;
   int margin = 8;
   int max_group = 16;  ///< robots planned together at most: a first group beyond it ends the end game
