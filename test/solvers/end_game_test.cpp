@@ -78,18 +78,24 @@ TEST(EndGame, AnswersNoneWhereTheRobotsLeftCannotPass) {
 
 TEST(EndGame, DoesNotPlanTheSameGroupAgain) {
   // The corridor without a pocket: nobody else stands near the ways, so the rounds after the
-  // first would add nobody to the group of the first, whose plan fails (proven).
+  // first would add nobody to the group of the first. Its plan fails by the joint search's
+  // proof, whatever the machine's speed: no time-bound repair (LA-CBS, LA-LaCAM, pair proofs)
+  // comes before it.
   const World w(mapFromRows({"..............", "@@@@@@@@@@@@@@"}),
                 {dot("a", {0, 0, 0}, {13, 0, 0}), dot("b", {13, 0, 2}, {0, 0, 2})});
   const Subproblem sub = allRobots(w);
   const SearchSpace space(sub);
+  LaLnsOptions lns;
+  lns.joint_seconds = 0;
+  lns.alone_expansions = 0;
+  lns.pair_proof_expansions = 0;
+  ASSERT_EQ(LaLns(lns).solve(allRobots(w, 60.0)).status, SolveStatus::Infeasible);
   const std::vector<StatePath> parked = {{space.start(0)}, {space.start(1)}};
   auto spent = [&](int rounds) {
     EndGameOptions options;
     options.rounds = rounds;
     long long expansions = 0;
-    EXPECT_FALSE(endGame(space, sub, parked, {0, 0}, LaLnsOptions{}, Deadline::in(5.0), options, expansions)
-                     .has_value());
+    EXPECT_FALSE(endGame(space, sub, parked, {0, 0}, lns, Deadline::in(60.0), options, expansions).has_value());
     return expansions;
   };
   const long long one_round = spent(1);
