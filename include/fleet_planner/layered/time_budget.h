@@ -30,8 +30,10 @@ struct TimeBudget {
   std::size_t pairs_per_failure = 120;
   /// Serial backends: low-level expansions per robot a level may spend planning around the timed
   /// paths of its cluster's earlier levels before it is planned at their targets and delayed
-  /// instead (a count, so the outcome does not depend on the machine).
-  long long chain_expansions_per_robot = 50'000;
+  /// instead (a count, so the outcome does not depend on the machine). Generous: a packed
+  /// level's parking plan among those paths may get every robot home only after many
+  /// expansions, and its plan has none of the second attempt's delays.
+  long long chain_expansions_per_robot = 100'000;
   /// Step aside (step_aside.h): standing robots within this many cells of a failed subproblem's
   /// shortest paths may step aside; as many as its robots (the nearest), at least
   /// step_aside_min_count.
