@@ -3,8 +3,10 @@
 // plan goes through the independent validator.
 #include <gtest/gtest.h>
 
+#include <optional>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "fleet_planner/solvers/lns/la_lns.h"
 #include "fleet_planner/solvers/registry.h"
@@ -57,6 +59,21 @@ Robot parisRobot(const std::string& id) {
   throw std::invalid_argument("no robot " + id + " in the knot");
 }
 
+// The knot's robots `ids` on Paris_1_256 solved by `solver` with solver seed `seed` within
+// `max_expansions` (and 300 s: the expansions decide, not the machine); none without
+// ../shared/benchmark.
+std::optional<Outcome> solveParisKnot(Solver& solver, const std::vector<std::string>& ids,
+                                      long long max_expansions, std::uint64_t seed = 0) {
+  const std::optional<GridMap> paris = sharedBenchmarkMap("Paris_1_256");
+  if (!paris) return std::nullopt;
+  std::vector<Robot> robots;
+  for (const std::string& id : ids) robots.push_back(parisRobot(id));
+  const World w(*paris, robots);
+  Subproblem sub = allRobots(w, 300.0, seed);
+  sub.max_expansions = max_expansions;
+  return solveWith(solver, w, sub);
+}
+
 // Robots 95 and 60 of `generate --feasible --seed 1` with 300 robots on Paris_1_256 (read from
 // ../shared when it is there), alone. The wide block starts at the map's top edge on the
 // circle's target and, once at its own target, can never leave it (a wall ahead, no room to
@@ -65,13 +82,10 @@ Robot parisRobot(const std::string& id) {
 // step 0 runs out of states on the circle's long way. Searched jointly from shortly before the
 // two would meet, with the block held at its start until then, it is a few dozen steps.
 TEST(LaLns, UntiesAKnotFarFromTheStartsByAJointSearchStartedLater) {
-  const std::optional<GridMap> paris = sharedBenchmarkMap("Paris_1_256");
-  if (!paris) GTEST_SKIP() << "no ../shared/benchmark";
-  const World w(*paris, {parisRobot("95"), parisRobot("60")});
-  Subproblem sub = allRobots(w, 300.0);  // the expansions decide, not the machine
-  sub.max_expansions = 5'000'000;
-  const Outcome o = solveWith("la_lns", w, sub);
-  EXPECT_TRUE(solvedValidly(o)) << describe(o);
+  LaLns solver;
+  const std::optional<Outcome> o = solveParisKnot(solver, {"95", "60"}, 5'000'000, 1);
+  if (!o) GTEST_SKIP() << "no ../shared/benchmark";
+  EXPECT_TRUE(solvedValidly(*o)) << describe(*o);
 }
 
 // The same two with robots 112 (leaving from beside the block's start for the far south) and
@@ -84,13 +98,10 @@ TEST(LaLns, UntiesAKnotOfFourWhereRobotsFarAwayDriveOnForLong) {
   // 11 million expansions, 14 s in a release build: the pair's test above runs the same code.
   GTEST_SKIP() << "too slow under the sanitizers";
 #endif
-  const std::optional<GridMap> paris = sharedBenchmarkMap("Paris_1_256");
-  if (!paris) GTEST_SKIP() << "no ../shared/benchmark";
-  const World w(*paris, {parisRobot("60"), parisRobot("95"), parisRobot("112"), parisRobot("293")});
-  Subproblem sub = allRobots(w, 300.0, 0);  // the expansions decide, not the machine
-  sub.max_expansions = 16'000'000;
-  const Outcome o = solveWith("la_lns", w, sub);
-  EXPECT_TRUE(solvedValidly(o)) << describe(o);
+  LaLns solver;
+  const std::optional<Outcome> o = solveParisKnot(solver, {"60", "95", "112", "293"}, 16'000'000);
+  if (!o) GTEST_SKIP() << "no ../shared/benchmark";
+  EXPECT_TRUE(solvedValidly(*o)) << describe(*o);
 }
 
 // The pair 95 and 60 with robot 25, which comes last from the far west and parks at the strip's
@@ -101,13 +112,10 @@ TEST(LaLns, UntiesAKnotOfFourWhereRobotsFarAwayDriveOnForLong) {
 // the three (LA-LNS, LA-CBS and LA-LaCAM, 30 s each). Merged from its start on, the later
 // search finds the pair's way, and 25 is planned around it.
 TEST(LaLns, UntiesAKnotNearWhichAnotherRobotArrivesLast) {
-  const std::optional<GridMap> paris = sharedBenchmarkMap("Paris_1_256");
-  if (!paris) GTEST_SKIP() << "no ../shared/benchmark";
-  const World w(*paris, {parisRobot("25"), parisRobot("60"), parisRobot("95")});
-  Subproblem sub = allRobots(w, 300.0, 0);  // the expansions decide, not the machine
-  sub.max_expansions = 2'500'000;
-  const Outcome o = solveWith("la_lns", w, sub);
-  EXPECT_TRUE(solvedValidly(o)) << describe(o);
+  LaLns solver;
+  const std::optional<Outcome> o = solveParisKnot(solver, {"25", "60", "95"}, 2'500'000);
+  if (!o) GTEST_SKIP() << "no ../shared/benchmark";
+  EXPECT_TRUE(solvedValidly(*o)) << describe(*o);
 }
 
 // Robots 25, 60, 95 and 293 with neighbourhoods of 2 robots: a subproblem larger than its
@@ -120,16 +128,12 @@ TEST(LaLns, TakesTheJointSearchForTheLastPairsOfASubproblemLargerThanItsNeighbou
 #if defined(__SANITIZE_ADDRESS__)
   GTEST_SKIP() << "11 million expansions, 15 s in a release build: too slow under the sanitizers";
 #endif
-  const std::optional<GridMap> paris = sharedBenchmarkMap("Paris_1_256");
-  if (!paris) GTEST_SKIP() << "no ../shared/benchmark";
-  const World w(*paris, {parisRobot("25"), parisRobot("60"), parisRobot("95"), parisRobot("293")});
   LaLnsOptions options;
   options.neighborhood_size = 2;
   LaLns solver(options);
-  Subproblem sub = allRobots(w, 300.0, 0);  // the expansions decide, not the machine
-  sub.max_expansions = 16'000'000;
-  const Outcome o = solveWith(solver, w, sub);
-  EXPECT_TRUE(solvedValidly(o)) << describe(o);
+  const std::optional<Outcome> o = solveParisKnot(solver, {"25", "60", "95", "293"}, 16'000'000);
+  if (!o) GTEST_SKIP() << "no ../shared/benchmark";
+  EXPECT_TRUE(solvedValidly(*o)) << describe(*o);
 }
 
 // The six robots of Paris_1_256 300 seed 1's knot (sessions 48-56 in docs/history.md): the
@@ -141,14 +145,11 @@ TEST(LaLns, UntiesASixRobotKnotWhoseHeldRobotMakesWayBeforeTheSearch) {
 #if defined(__SANITIZE_ADDRESS__)
   GTEST_SKIP() << "6 million expansions, 10 s in a release build: too slow under the sanitizers";
 #endif
-  const std::optional<GridMap> paris = sharedBenchmarkMap("Paris_1_256");
-  if (!paris) GTEST_SKIP() << "no ../shared/benchmark";
-  const World w(*paris, {parisRobot("25"), parisRobot("60"), parisRobot("95"), parisRobot("112"),
-                         parisRobot("227"), parisRobot("293")});
-  Subproblem sub = allRobots(w, 300.0, 0);
-  sub.max_expansions = 10'000'000;
-  const Outcome o = solveWith("la_lns", w, sub);
-  EXPECT_TRUE(solvedValidly(o)) << describe(o);
+  LaLns solver;
+  const std::optional<Outcome> o =
+      solveParisKnot(solver, {"25", "60", "95", "112", "227", "293"}, 10'000'000);
+  if (!o) GTEST_SKIP() << "no ../shared/benchmark";
+  EXPECT_TRUE(solvedValidly(*o)) << describe(*o);
 }
 
 }  // namespace
