@@ -22,16 +22,28 @@ class Sipp {
   // `memory` (cleared).
   Sipp(const SearchSpace& space, int a, const SoftPathTable& others, int from, SearchMemory& memory)
       : space_(space), a_(a), others_(others), graph_(space.graph(a)), from_(from),
-        unsafe_index_(memory.unsafe_index), intervals_index_(memory.intervals_index),
-        unsafe_(memory.unsafe), intervals_(memory.intervals), run_pool_(memory.run_pool),
-        interval_pool_(memory.interval_pool), merged_(memory.merged),
-        interval_scratch_(memory.interval_scratch), runs_(memory.runs) {}
+        state_index_(memory.state_index), states_(memory.states), unsafe_(memory.unsafe),
+        run_pool_(memory.run_pool), interval_pool_(memory.interval_pool), merged_(memory.merged),
+        interval_scratch_(memory.interval_scratch), runs_(memory.runs), best_of_(memory.best_of) {}
+
+  // The index of s's answers in states_, added (none asked yet) if s has none.
+  int answersOf(StateId s) {
+    int& index = state_index_[s];
+    if (index < 0) {
+      index = static_cast<int>(states_.size());
+      StateAnswers answers{s, {}, {}, -1};
+      answers.unsafe.fill(-1);
+      states_.push_back(answers);
+    }
+    return index;
+  }
+  const StateAnswers& answers(int index) const { return states_[index]; }
 
   // Steps from from_ on during which doing `action` from s collides with another agent or a
   // moving obstacle.
   Unsafe unsafe(StateId s, Action action) {
-    const std::uint64_t k = static_cast<std::uint64_t>(s) * kActions + static_cast<int>(action);
-    if (const int* known = unsafe_index_.find(k)) return unsafe_[*known];
+    const int index = answersOf(s), act = static_cast<int>(action);
+    if (const int known = states_[index].unsafe[act]; known >= 0) return unsafe_[known];
     const GridPose p = graph_.pose(s);
     if (action == Action::Wait) {  // a disc waits alike at every heading: one answer
       const int same = space_.sameWaitHeading(a_, p.heading);
@@ -39,7 +51,7 @@ class Sipp {
         const StateId alike = graph_.id({p.x, p.y, same});
         const Unsafe answer = unsafe(alike, Action::Wait);
         // Kept under this state too: the next ask is one lookup.
-        unsafe_index_.set(k, *unsafe_index_.find(static_cast<std::uint64_t>(alike) * kActions));
+        states_[index].unsafe[act] = states_[state_index_[alike]].unsafe[act];
         return answer;
       }
     }
@@ -52,7 +64,7 @@ class Sipp {
     }
     if (forever != kNever) runs_.emplace_back(forever, kNever);
     addReservations(space_.probe(a_, p.heading, action), {p.x, p.y});
-    return store(k, lo, hi);
+    return store(index, act, lo, hi);
   }
 
   // Steps from from_ on during which the cells of the move `action` from s outside its two
@@ -61,15 +73,15 @@ class Sipp {
   // cells do; a search departs only within a safe interval of the state it leaves and arrives
   // within one of the state it enters, so it reads these alone (see searchBetween).
   Unsafe beyondBodies(StateId s, Action action, const CellSet& extra) {
-    const std::uint64_t k = static_cast<std::uint64_t>(s) * kActions + static_cast<int>(action);
-    if (const int* known = unsafe_index_.find(k)) return unsafe_[*known];
+    const int index = answersOf(s), act = static_cast<int>(action);
+    if (const int known = states_[index].unsafe[act]; known >= 0) return unsafe_[known];
     const GridPose p = graph_.pose(s);
     runs_.clear();
     int forever = kNever;
     others_.spansAt(a_, extra, {p.x, p.y}, runs_, forever, from_);
     if (forever != kNever) runs_.emplace_back(forever, kNever);
     addReservations(extra, {p.x, p.y});
-    return store(k, kNever, -1);
+    return store(index, act, kNever, -1);
   }
 
   // Appends to runs_ the steps from from_ on during which a moving obstacle covers a cell of
@@ -88,16 +100,20 @@ class Sipp {
     runs_.resize(kept);
   }
 
-  // The union of runs_ and of the bitset's steps lo..hi, kept as the answer for key k.
-  Unsafe store(std::uint64_t k, int lo, int hi) {
+  // The union of runs_ and of the bitset's steps lo..hi, kept as the answer of states_[index]
+  // for action `act`.
+  Unsafe store(int index, int act, int lo, int hi) {
     unionOf(runs_, merged_, lo, hi);
-    unsafe_index_.set(k, static_cast<int>(unsafe_.size()));
+    states_[index].unsafe[act] = static_cast<int>(unsafe_.size());
     unsafe_.push_back(run_pool_.add(merged_));
     return unsafe_.back();
   }
 
-  PoolRun<Interval> intervals(StateId s) {
-    if (const int* known = intervals_index_.find(static_cast<std::uint64_t>(s))) return intervals_[*known];
+  // The index of s's answers in states_, its safe intervals among them (with one entry each in
+  // best_of_, -1).
+  int intervalsOf(StateId s) {
+    const int index = answersOf(s);
+    if (states_[index].best >= 0) return index;
     const Unsafe u = unsafe(s, Action::Wait);
     std::vector<Interval>& out = interval_scratch_;
     out.clear();
@@ -112,10 +128,17 @@ class Sipp {
       first = to + 1;
     }
     if (!closed) out.push_back({first, kNever});
-    intervals_index_.set(static_cast<std::uint64_t>(s), static_cast<int>(intervals_.size()));
-    intervals_.push_back(interval_pool_.add(out));
-    return intervals_.back();
+    StateAnswers& answers = states_[index];
+    answers.intervals = interval_pool_.add(out);
+    answers.best = static_cast<int>(best_of_.size());
+    best_of_.resize(best_of_.size() + out.size(), -1);
+    return index;
   }
+  PoolRun<Interval> intervals(StateId s) { return states_[intervalsOf(s)].intervals; }
+  // The node of (states_[index]'s state, its interval j): -1 if none.
+  int& bestNode(int index, int j) { return best_of_[states_[index].best + j]; }
+  // Forgets every state's node.
+  void forgetNodes() { std::fill(best_of_.begin(), best_of_.end(), -1); }
 
   // The union of `runs` (inclusive; second == kNever: from first on) as sorted, disjoint,
   // non-adjacent runs. A motion's runs number about a hundred, most of them repeats from
@@ -210,16 +233,16 @@ class Sipp {
   const SoftPathTable& others_;
   const StateGraph& graph_;
   const int from_;
-  // The answers so far, by (state, action) and by state: indices into unsafe_ and intervals_
-  // (SearchMemory).
-  NodeTable &unsafe_index_, &intervals_index_;
+  // The answers so far (SearchMemory).
+  std::vector<int>& state_index_;
+  std::vector<StateAnswers>& states_;
   std::vector<Unsafe>& unsafe_;
-  std::vector<PoolRun<Interval>>& intervals_;
   StablePool<std::pair<int, int>>& run_pool_;
   StablePool<Interval>& interval_pool_;
   std::vector<std::pair<int, int>>& merged_;    // scratch
   std::vector<Interval>& interval_scratch_;     // scratch
   std::vector<std::pair<int, int>>& runs_;      // scratch
+  std::vector<int>& best_of_;  // (state, interval) -> node of searchBetween (StateAnswers::best)
   static constexpr int kSteps = 4096;          // steps of the bitset of unionOf
   std::array<std::uint64_t, kSteps / 64> steps_{};  // unionOf's bitset, all clear between calls
 };
@@ -264,10 +287,11 @@ SafeIntervalResult searchBetween(const SearchSpace& space, int a, const SoftPath
   auto heuristic = [&](StateId s) {
     return to_target ? space.distance(a, s) : stepsBetween(g, s, goal);
   };
-  MemoryLease lease;
+  MemoryLease lease(g.stateIdCount());
   SearchMemory& memory = lease.memory();
   Sipp sipp(space, a, others, t0, memory);
-  const PoolRun<Interval> first = sipp.intervals(from);
+  const int from_answers = sipp.intervalsOf(from);
+  const PoolRun<Interval> first = sipp.answers(from_answers).intervals;
   int first_interval = -1;
   for (int i = 0; i < static_cast<int>(first.size()) && first_interval < 0; ++i) {
     if (first[i].first <= t0 && (first[i].last == kNever || t0 <= first[i].last)) first_interval = i;
@@ -293,10 +317,6 @@ SafeIntervalResult searchBetween(const SearchSpace& space, int a, const SoftPath
   int bound = late_bound;
 
   std::vector<Node>& nodes = memory.nodes;
-  NodeTable& best = memory.best;  // (state, interval) -> node
-  auto key = [](StateId s, int i) {
-    return (static_cast<std::uint64_t>(i) << 32) | static_cast<std::uint32_t>(s);
-  };
   auto worse = [](const SearchMemory::Open& p, const SearchMemory::Open& q) {
     if (p.f != q.f) return p.f > q.f;
     if (p.g != q.g) return p.g < q.g;
@@ -304,18 +324,18 @@ SafeIntervalResult searchBetween(const SearchSpace& space, int a, const SoftPath
   };
   std::vector<SearchMemory::Open>& open = memory.open;  // a heap: the node to expand next in front
   // A node of (s, interval) arriving at `arrival`, unless one arrives there as early already; a
-  // later one it replaces is marked stale (skipped when it comes off the heap).
-  auto push = [&](StateId s, int interval, int last, int arrival, int parent) {
+  // later one it replaces is marked stale (skipped when it comes off the heap). `answers`: the
+  // index of s's answers (Sipp::intervalsOf).
+  auto push = [&](StateId s, int answers, int interval, int last, int arrival, int parent) {
     const int h = heuristic(s);
     if (arrival + h > (forever ? bound : t1 + max_delay)) return;  // cannot reach the goal in time
     const int f = weight == 1.0 ? arrival + h : arrival + static_cast<int>(weight * h);
-    bool added = false;
-    int& entry = best.findOrAdd(key(s, interval), static_cast<int>(nodes.size()), added);
-    if (!added) {
+    int& entry = sipp.bestNode(answers, interval);
+    if (entry >= 0) {
       if (nodes[entry].g <= arrival) return;
       nodes[entry].stale = true;
-      entry = static_cast<int>(nodes.size());
     }
+    entry = static_cast<int>(nodes.size());
     nodes.push_back({s, interval, last, arrival, f, parent, false});
     open.push_back({f, arrival, static_cast<int>(nodes.size()) - 1});
     std::push_heap(open.begin(), open.end(), worse);
@@ -325,9 +345,9 @@ SafeIntervalResult searchBetween(const SearchSpace& space, int a, const SoftPath
     const int begin = pass == 0 ? late : t0;
     bound = pass == 0 ? late_bound : max_arrival;
     nodes.clear();
-    best.clear();
+    sipp.forgetNodes();
     open.clear();
-    push(from, first_interval, first[first_interval].last, begin, -1);
+    push(from, from_answers, first_interval, first[first_interval].last, begin, -1);
     while (!open.empty()) {
       if ((result.expansions & 255) == 0 && deadline.expired()) {
         result.outcome = SafeIntervalResult::Outcome::Expired;
@@ -363,7 +383,8 @@ SafeIntervalResult searchBetween(const SearchSpace& space, int a, const SoftPath
       g.forEachSuccessor(node.s, [&](Action act, StateId next) {
         if (act == Action::Wait || space.distance(a, next) < 0 || !space.allows(a, node.s, act))
           return;
-        const PoolRun<Interval> there = sipp.intervals(next);
+        const int next_answers = sipp.intervalsOf(next);
+        const PoolRun<Interval> there = sipp.answers(next_answers).intervals;
         // A move that decomposes (SearchSpace::moveExtra) collides during step t iff waiting at
         // node.s or at next during t does, or its extra cells meet someone then. Departing at t
         // within node's interval and arriving at t + 1 within there[j] (t + 1 <= there[j].last) leaves
@@ -387,7 +408,7 @@ SafeIntervalResult searchBetween(const SearchSpace& space, int a, const SoftPath
           const int hi = std::min(node.last, there[j].last == kNever ? kNever : there[j].last - 1);
           const int earliest = extra != nullptr ? there[j].first : there[j].first - 1;
           const int departure = Sipp::earliestDeparture(move, std::max(node.g, earliest), hi);
-          if (departure >= 0) push(next, j, there[j].last, departure + 1, index);
+          if (departure >= 0) push(next, next_answers, j, there[j].last, departure + 1, index);
         }
       });
     }
@@ -398,7 +419,7 @@ SafeIntervalResult searchBetween(const SearchSpace& space, int a, const SoftPath
 }  // namespace
 
 int earliestArrivalForGood(const SearchSpace& space, int a, const SoftPathTable& others) {
-  MemoryLease lease;
+  MemoryLease lease(space.graph(a).stateIdCount());
   Sipp sipp(space, a, others, 0, lease.memory());
   const PoolRun<Interval> home = sipp.intervals(space.target(a));
   return home.empty() || home.back().last != kNever ? kNever : arrivalFor(home.back(), 0);
