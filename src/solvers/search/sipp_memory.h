@@ -88,8 +88,9 @@ struct SearchMemory {
   }
 };
 
-// The thread's SearchMemory for one search over `state_ids` state ids, cleared; a new one if the thread's is taken (or
-// was dropped). Kept for the thread's next search unless it grew past kKeptBytes.
+// The thread's SearchMemory for one search over `state_ids` state ids, cleared; a new one if the
+// thread's is taken (or was dropped). Kept for the thread's next search unless it grew past
+// kKeptBytes.
 class MemoryLease {
  public:
   explicit MemoryLease(int state_ids) : held_(idle_ ? std::move(idle_) : std::make_unique<SearchMemory>()) {
