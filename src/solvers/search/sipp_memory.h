@@ -80,8 +80,11 @@ struct SearchMemory {
     best_of.clear();
     open.clear();
   }
-  std::size_t bytes() const {
-    return state_index.capacity() * sizeof(int) + states.capacity() * sizeof(StateAnswers) +
+  // Bytes held that grow with the searches made (the array over state ids grows with the map
+  // alone, and is kept whatever its size: allocated anew for each search of a large map, it
+  // would cost more than the search).
+  std::size_t searchBytes() const {
+    return states.capacity() * sizeof(StateAnswers) +
            run_pool.bytes() + interval_pool.bytes() + unsafe.capacity() * sizeof(Unsafe) +
            nodes.capacity() * sizeof(Node) + best_of.capacity() * sizeof(int) +
            open.capacity() * sizeof(Open);
@@ -97,7 +100,7 @@ class MemoryLease {
     held_->clear(state_ids);
   }
   ~MemoryLease() {
-    if (!idle_ && held_->bytes() <= kKeptBytes) idle_ = std::move(held_);
+    if (!idle_ && held_->searchBytes() <= kKeptBytes) idle_ = std::move(held_);
   }
   MemoryLease(const MemoryLease&) = delete;
   MemoryLease& operator=(const MemoryLease&) = delete;
