@@ -66,6 +66,7 @@ void LaLns::configure(const BackendOptionValues& values) {
   bind.flag("end_game", o.end_game);
   bind.number("end_game_share", o.end_game_share, 0, 1);
   bind.flag("splice", o.splice);
+  bind.flag("splice_each_colliding", o.splice_each_colliding);
   bind.finish();
   options_ = o;
 }

@@ -1,10 +1,12 @@
 // Local repairs of LA-LNS (path_splice.h) and the safe interval search's pieces between two
 // states of a path: on crossing robots of every footprint kind, a repaired path keeps its start
 // and target, moves only along its graph's actions, collides with nobody wherever it differs
-// from the old one, and (without delays) meets no agent the old path did not.
+// from the old one, and (without delays) meets no agent the old path did not; a window whose
+// path the caller rejects gives way to the next one.
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <optional>
 
 #include "fleet_planner/runtime/random.h"
 #include "fleet_planner/solvers/lns/path_splice.h"
@@ -49,8 +51,9 @@ TEST(PathSplice, RepairedPathsKeepTheirEndsAndAvoidEveryoneWhereTheyChanged) {
   const Subproblem sub = allRobots(w);
   const SearchSpace space(sub);
   Rng rng(11);
-  int repaired[2] = {0, 0};
-  int made_up = 0;  // delayed repairs back on the old timing at the end
+  int repaired[3] = {0, 0, 0};
+  int made_up = 0;      // delayed repairs back on the old timing at the end
+  int wider_kept = 0;   // repairs whose first window `keep` rejected and a later one passed
   for (int round = 0; round < 60; ++round) {
     // Shortest paths with random waits (before them and on the way), so that they cross at
     // other times and a delay can be made up.
@@ -70,11 +73,22 @@ TEST(PathSplice, RepairedPathsKeepTheirEndsAndAvoidEveryoneWhereTheyChanged) {
       const std::vector<int> before = table.partners(a);
       for (int t : collisionStarts(space, a, table)) {
         ASSERT_TRUE(collidesAt(space, a, table, old, t)) << "round " << round << ", step " << t;
-        for (bool delays : {false, true}) {
-          const SpliceResult r = spliceAround(space, a, table, t, delays, Deadline::in(5.0), 100000);
+        // On time; with delays; with delays and only paths that meet fewer agents kept.
+        const auto fewer = [&](const StatePath& p) { return table.partners(a, p).size() < before.size(); };
+        std::optional<StatePath> first_window;
+        for (int mode : {0, 1, 2}) {
+          const bool delays = mode > 0;
+          const SpliceResult r =
+              mode < 2 ? spliceAround(space, a, table, t, delays, Deadline::in(5.0), 100000)
+                       : spliceAround(space, a, table, t, delays, Deadline::in(5.0), 100000, fewer);
+          if (mode == 1) first_window = r.path;
           if (!r.path) continue;
-          ++repaired[delays];
+          ++repaired[mode];
           const StatePath& path = *r.path;
+          if (mode == 2) {
+            ASSERT_TRUE(fewer(path)) << "round " << round << ": a path `keep` rejects was returned";
+            if (first_window && !fewer(*first_window)) ++wider_kept;
+          }
           ASSERT_EQ(path.front(), old.front());
           ASSERT_EQ(path.back(), space.target(a));
           for (std::size_t k = 0; k + 1 < path.size(); ++k)
@@ -123,6 +137,8 @@ TEST(PathSplice, RepairedPathsKeepTheirEndsAndAvoidEveryoneWhereTheyChanged) {
   EXPECT_GT(repaired[0], 20) << "enough collisions should be repairable on time";
   EXPECT_GT(repaired[1], 20) << "enough collisions should be repairable with delays";
   EXPECT_GT(made_up, 0) << "some delays should be made up by the paths' own waits";
+  EXPECT_GT(repaired[2], 10) << "enough collisions should be repairable meeting fewer agents";
+  EXPECT_GT(wider_kept, 0) << "a window `keep` rejects should give way to a later one";
 }
 
 // The piece's own steps (all but the state it holds from its last step on) collide with nobody.

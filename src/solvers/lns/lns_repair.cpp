@@ -1,6 +1,7 @@
 // LA-LNS: replanning a neighbourhood; see lns_search.h.
 #include <algorithm>
 #include <climits>
+#include <functional>
 
 #include "fleet_planner/infeasibility/infeasible_pairs.h"
 #include "fleet_planner/solvers/lns/joint_repair.h"
@@ -284,29 +285,56 @@ int LnsSearch::collidingPairs() const {
   return static_cast<int>(ends / 2);
 }
 
-// One local repair (path_splice.h) of a random collision of a random colliding agent, kept
-// unless the delay it gives the rest of the path meets more agents than before.
-void LnsSearch::splice() {
+// Local repairs (path_splice.h): with splice_each_colliding, in a subproblem of more than twice
+// a neighbourhood's robots, one of each colliding agent in a random order, each kept only if
+// the agent then meets fewer agents (the windows are tried until one does); else one of a
+// random colliding agent, kept unless it meets more. A robot
+// parked where a late robot passes, or one whose rest of the way a delay pushes into others,
+// is mostly repaired in a few hundred expansions, where a repair that replans it whole around
+// hundreds of long paths runs out of its searches' expansions.
+void LnsSearch::splices() {
   std::vector<int> colliding;
   for (int a = 0; a < n_; ++a) {
     if (!partners_[a].empty()) colliding.push_back(a);
   }
   if (colliding.empty()) return;
-  const int a = pick(colliding);
+  // In a subproblem of at most twice a neighbourhood's robots a repair replans much of it, and
+  // the local repairs that fail (their windows' searches spent in full) would take the time of
+  // the joint repairs that untie its knots.
+  if (!options_.splice_each_colliding || n_ <= 2 * options_.neighborhood_size) {
+    splice(pick(colliding), /*fewer=*/false);
+    return;
+  }
+  shuffle(colliding);
+  for (int a : colliding) {
+    if (outOfBudget()) return;
+    // An earlier splice of this pass may have repaired it.
+    if (!partners_[a].empty()) splice(a, /*fewer=*/true);
+  }
+}
+
+void LnsSearch::splice(int a, bool fewer) {
   const std::vector<int> starts = collisionStarts(space_, a, table_);
   if (starts.empty()) return;
-  const SpliceResult r = spliceAround(space_, a, table_, pick(starts), /*delays=*/true,
-                                      problem_.deadline, options_.max_expansions_per_search);
+  const std::size_t had = partners_[a].size();
+  std::vector<int> partners;
+  const auto meets = [&](const StatePath& path) {
+    partners = table_.partners(a, path);
+    return partners.size() < had;
+  };
+  const SpliceResult r =
+      spliceAround(space_, a, table_, pick(starts), /*delays=*/true, problem_.deadline,
+                   options_.max_expansions_per_search, fewer ? meets : std::function<bool(const StatePath&)>{});
   stats_.low_level_expansions += r.expansions;
   if (!r.path) return;
-  const std::vector<int> partners = table_.partners(a, *r.path);
-  if (partners.size() <= partners_[a].size()) replacePath(a, *r.path, partners);
+  if (!fewer) partners = table_.partners(a, *r.path);
+  if (partners.size() <= had) replacePath(a, *r.path, partners);
 }
 
 void LnsSearch::repair() {
   ++stats_.high_level_nodes;
   if (options_.splice) {
-    splice();
+    splices();
     if (collidingPairs() == 0) return;
   }
   size_ = growth_.next(collidingPairs());

@@ -140,9 +140,12 @@ class LnsSearch {
   // the agents the new path collides with).
   void replacePath(int a, const StatePath& path, const std::vector<int>& partners);
 
-  // One local repair (path_splice.h) of a random collision of a random colliding agent, kept
-  // unless the delay it gives the rest of the path meets more agents than before.
-  void splice();
+  // Local repairs (path_splice.h) before a repair: of each colliding agent, or of one
+  // (LaLnsOptions::splice_each_colliding).
+  void splices();
+  // One local repair of a random collision of agent a: kept when a then meets fewer agents
+  // (`fewer`: the windows are tried until one does), else unless it meets more.
+  void splice(int a, bool fewer);
 
   void repair();
 

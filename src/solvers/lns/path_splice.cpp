@@ -42,7 +42,8 @@ std::vector<int> collisionStarts(const SearchSpace& space, int a, const SoftPath
 }
 
 SpliceResult spliceAround(const SearchSpace& space, int a, const SoftPathTable& table, int t,
-                          bool delays, const Deadline& deadline, long long max_expansions) {
+                          bool delays, const Deadline& deadline, long long max_expansions,
+                          const std::function<bool(const StatePath&)>& keep) {
   SpliceResult result;
   const StatePath& old = table.path(a);
   const int last = static_cast<int>(old.size()) - 1;  // held from here on
@@ -74,12 +75,13 @@ SpliceResult spliceAround(const SearchSpace& space, int a, const SoftPathTable& 
     StatePath spliced(old.begin(), old.begin() + std::min(t0, last + 1));
     while (static_cast<int>(spliced.size()) < t0) spliced.push_back(old.back());
     spliced.insert(spliced.end(), r.path.begin(), r.path.end());
+    int rejoin = -1, delay = 0;
     if (t1 != SoftPathTable::kNever) {
-      result.rejoin = t1;
-      result.delay = static_cast<int>(spliced.size()) - 1 - t1;
+      rejoin = t1;
+      delay = static_cast<int>(spliced.size()) - 1 - t1;
       // The old path's own waits take up the delay, where it has some: after them the path is
       // back on its old timing.
-      int owed = result.delay;
+      int owed = delay;
       for (int k = t1 + 1; k <= last; ++k) {
         if (owed > 0 && old[k] == old[k - 1]) {
           --owed;
@@ -88,6 +90,9 @@ SpliceResult spliceAround(const SearchSpace& space, int a, const SoftPathTable& 
         spliced.push_back(old[k]);
       }
     }
+    if (keep && !keep(spliced)) continue;
+    result.rejoin = rejoin;
+    result.delay = delay;
     result.path = std::move(spliced);
     return result;
   }

@@ -119,10 +119,15 @@ struct LaLnsOptions {
   /// else has stopped, in at most `end_game_share` of the time left.
   bool end_game = true;
   double end_game_share = 0.3;
-  /// Before each repair, one local repair of a colliding agent (path_splice.h): a few steps of
-  /// its path around one of its collisions replanned collision-free, the rest kept (delayed if
-  /// need be).
+  /// Before each repair, local repairs (path_splice.h): a few steps of a colliding agent's path
+  /// around one of its collisions replanned collision-free, the rest kept (delayed if need be).
   bool splice = true;
+  /// In a subproblem of more than twice neighborhood_size robots, one local repair of each
+  /// colliding agent, in a random order, each kept only if the agent then meets fewer agents
+  /// (its windows tried until one does); otherwise, or false: one of a random colliding agent,
+  /// kept unless it meets more. In fleets of hundreds planned as one, the last pairs are mostly
+  /// robots parked where a late robot passes: each steps aside locally.
+  bool splice_each_colliding = true;
 };
 
 class LaLns : public Solver {

@@ -8,6 +8,7 @@
 /// hundreds of steps, is repaired without replanning the whole path: the searches that replan
 /// whole paths around the others as soft obstacles run out of nodes there, on large maps, as
 /// soon as the detour costs more than a few steps.
+#include <functional>
 #include <optional>
 
 #include "fleet_planner/runtime/deadline.h"
@@ -36,8 +37,11 @@ struct SpliceResult {
 /// has a collision-free piece (at most `max_expansions` expansions each). With `delays`, a piece
 /// may also rejoin the path later than it left it, by up to the steps the window closes after
 /// the run: the rest of the path then keeps its moves but runs late until its own waits have
-/// made up the delay, so it may meet other agents than before.
+/// made up the delay, so it may meet other agents than before. With `keep`, a window whose
+/// repaired path `keep` rejects counts as failed and the next one is tried: a wider window may
+/// delay the rest of the path less, or not at all.
 SpliceResult spliceAround(const SearchSpace& space, int a, const SoftPathTable& table, int t,
-                          bool delays, const Deadline& deadline, long long max_expansions);
+                          bool delays, const Deadline& deadline, long long max_expansions,
+                          const std::function<bool(const StatePath&)>& keep = {});
 
 }  // namespace fleet_planner
