@@ -42,6 +42,7 @@ LnsSearch::LnsSearch(const SearchSpace& space, const Subproblem& problem,
       ideal_(n_),
       ideal_absent_(n_, false),
       escalation_(n_, 1),
+      splice_failed_at_(n_, -1),
       growth_(options.neighborhood_size, stallRepairs(options, n_), n_) {
   weights_.fill(1.0);
 }

@@ -262,6 +262,7 @@ void LnsSearch::provePair(const std::vector<int>& group) {
 // Replaces agent a's path in the table and its edges in the collision graph (`partners`:
 // the agents the new path collides with).
 void LnsSearch::replacePath(int a, const StatePath& path, const std::vector<int>& partners) {
+  ++kept_;
   table_.remove(a);
   table_.insert(a, path);
   for (int b : partners_[a])
@@ -308,14 +309,17 @@ void LnsSearch::splices() {
   shuffle(colliding);
   for (int a : colliding) {
     if (outOfBudget()) return;
-    // An earlier splice of this pass may have repaired it.
-    if (!partners_[a].empty()) splice(a, /*fewer=*/true);
+    // An earlier splice of this pass may have repaired it. One that failed is not tried again
+    // until some path is kept: with the same table it mostly fails again, and a failing local
+    // repair spends its windows' searches in full.
+    if (partners_[a].empty() || splice_failed_at_[a] == kept_) continue;
+    if (!splice(a, /*fewer=*/true)) splice_failed_at_[a] = kept_;
   }
 }
 
-void LnsSearch::splice(int a, bool fewer) {
+bool LnsSearch::splice(int a, bool fewer) {
   const std::vector<int> starts = collisionStarts(space_, a, table_);
-  if (starts.empty()) return;
+  if (starts.empty()) return false;
   const std::size_t had = partners_[a].size();
   std::vector<int> partners;
   const auto meets = [&](const StatePath& path) {
@@ -326,9 +330,11 @@ void LnsSearch::splice(int a, bool fewer) {
       spliceAround(space_, a, table_, pick(starts), /*delays=*/true, problem_.deadline,
                    options_.max_expansions_per_search, fewer ? meets : std::function<bool(const StatePath&)>{});
   stats_.low_level_expansions += r.expansions;
-  if (!r.path) return;
+  if (!r.path) return false;
   if (!fewer) partners = table_.partners(a, *r.path);
-  if (partners.size() <= had) replacePath(a, *r.path, partners);
+  if (partners.size() > had) return false;
+  replacePath(a, *r.path, partners);
+  return true;
 }
 
 void LnsSearch::repair() {
@@ -366,6 +372,7 @@ void LnsSearch::repair() {
                      0.9 * weights_[method];
   weights_[method] = std::max(weights_[method], 0.01);
   if (after <= before) {
+    ++kept_;
     for (int a : group) {
       for (int b : partners_[a]) {
         if (!in[b])

@@ -144,8 +144,8 @@ class LnsSearch {
   // (LaLnsOptions::splice_each_colliding).
   void splices();
   // One local repair of a random collision of agent a: kept when a then meets fewer agents
-  // (`fewer`: the windows are tried until one does), else unless it meets more.
-  void splice(int a, bool fewer);
+  // (`fewer`: the windows are tried until one does), else unless it meets more. True if kept.
+  bool splice(int a, bool fewer);
 
   void repair();
 
@@ -164,6 +164,11 @@ class LnsSearch {
   bool parked_partly_ = false;  // the first plan began with a parking plan that left robots
   std::vector<bool> ideal_absent_;  // the search proved there is no such path
   std::vector<int> escalation_;     // per agent: factor of the collision cost
+  // Paths kept in the table so far (local repairs and repairs; a repair that is not kept puts
+  // the old paths back), and per agent the count at which its last local repair of a pass
+  // failed (splices()).
+  long long kept_ = 0;
+  std::vector<long long> splice_failed_at_;
   int planned_ = 0;                 // robots with a path in the first plan so far
   std::optional<std::string> proof_;  // why the subproblem has no plan, once a search proved it
   std::vector<int> proof_culprits_;   // the robots of that proof (instance indices)

@@ -124,9 +124,10 @@ struct LaLnsOptions {
   bool splice = true;
   /// In a subproblem of more than twice neighborhood_size robots, one local repair of each
   /// colliding agent, in a random order, each kept only if the agent then meets fewer agents
-  /// (its windows tried until one does); otherwise, or false: one of a random colliding agent,
-  /// kept unless it meets more. In fleets of hundreds planned as one, the last pairs are mostly
-  /// robots parked where a late robot passes: each steps aside locally.
+  /// (its windows tried until one does; one that failed is tried again once some path has been
+  /// kept); otherwise, or false: one of a random colliding agent, kept unless it meets more. In
+  /// fleets of hundreds planned as one, the last pairs are mostly robots parked where a late
+  /// robot passes: each steps aside locally.
   bool splice_each_colliding = true;
 };
 
