@@ -289,10 +289,10 @@ int LnsSearch::collidingPairs() const {
 // Local repairs (path_splice.h): with splice_each_colliding, in a subproblem of more than twice
 // a neighbourhood's robots, one of each colliding agent in a random order, each kept only if
 // the agent then meets fewer agents (the windows are tried until one does); else one of a
-// random colliding agent, kept unless it meets more. A robot
-// parked where a late robot passes, or one whose rest of the way a delay pushes into others,
-// is mostly repaired in a few hundred expansions, where a repair that replans it whole around
-// hundreds of long paths runs out of its searches' expansions.
+// random colliding agent, kept unless it meets more. A robot parked where a late robot passes,
+// or one whose rest of the way a delay pushes into others, is mostly repaired in a few hundred
+// expansions, where a repair that replans it whole around hundreds of long paths runs out of
+// its searches' expansions.
 void LnsSearch::splices() {
   std::vector<int> colliding;
   for (int a = 0; a < n_; ++a) {
