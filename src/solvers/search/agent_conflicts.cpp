@@ -1,6 +1,7 @@
 #include "fleet_planner/solvers/search/agent_conflicts.h"
 
 #include <algorithm>
+#include <climits>
 
 #include "fleet_planner/model/collision.h"
 #include "fleet_planner/solvers/search/space_time_astar.h"
@@ -26,35 +27,78 @@ Motion motionAt(const SearchSpace& space, const std::vector<StatePath>& paths, i
   return {g.pose(s), g.pose(n), stepAction(g, s, n)};
 }
 
-// Calls f(conflict) for conflicts in step order; stops when f returns true.
+// A box of map cells, inclusive; empty as constructed.
+struct Box {
+  int x0 = INT_MAX, y0 = INT_MAX, x1 = INT_MIN, y1 = INT_MIN;
+};
+
+// Grows `box` to hold `set` placed at p.
+void cover(Box& box, const CellSet& set, const GridPose& p) {
+  if (set.empty()) return;
+  box = {std::min(box.x0, p.x + set.minX()), std::min(box.y0, p.y + set.minY()),
+         std::max(box.x1, p.x + set.maxX()), std::max(box.y1, p.y + set.maxY())};
+}
+
+// The pairs (i < j), sorted, whose boxes overlap, found by sorting on the boxes' left edges and
+// sweeping: two footprints whose boxes do not overlap share no cell, so checking these pairs
+// only finds every conflict of the step, in the same order as checking every pair.
+void overlappingPairs(const std::vector<Box>& boxes, const std::vector<int>& agents,
+                      std::vector<int>& by_x, std::vector<std::pair<int, int>>& pairs) {
+  by_x = agents;
+  std::sort(by_x.begin(), by_x.end(), [&](int a, int b) {
+    return boxes[a].x0 != boxes[b].x0 ? boxes[a].x0 < boxes[b].x0 : a < b;
+  });
+  pairs.clear();
+  for (std::size_t k = 0; k < by_x.size(); ++k) {
+    const Box& a = boxes[by_x[k]];
+    for (std::size_t l = k + 1; l < by_x.size() && boxes[by_x[l]].x0 <= a.x1; ++l) {
+      const Box& b = boxes[by_x[l]];
+      if (b.y0 <= a.y1 && a.y0 <= b.y1) pairs.emplace_back(std::min(by_x[k], by_x[l]), std::max(by_x[k], by_x[l]));
+    }
+  }
+  std::sort(pairs.begin(), pairs.end());
+}
+
+// Calls f(conflict) for conflicts in step order (at one step by agent pair, a pair's vertex
+// conflict at t + 1 before its transfer of t); stops when f returns true. Each step checks only
+// the pairs whose boxes (bodies after the step, sweeps of the step, and at step 0 the bodies
+// before it) overlap: a fleet of hundreds has few such pairs among its n^2 / 2.
 template <class F>
 void forEachConflict(const SearchSpace& space, const std::vector<StatePath>& paths, F&& f) {
   const int n = static_cast<int>(paths.size());
   const int T = horizon(paths);
   std::vector<Motion> m(n);
+  std::vector<Box> boxes(n);
+  std::vector<int> agents, by_x;
+  std::vector<std::pair<int, int>> pairs;
+  for (int i = 0; i < n; ++i) {
+    if (!paths[i].empty()) agents.push_back(i);
+  }
   for (int t = 0; t < std::max(T, 1); ++t) {
-    for (int i = 0; i < n; ++i) {
-      if (!paths[i].empty()) m[i] = motionAt(space, paths, i, t);
+    for (int i : agents) {
+      m[i] = motionAt(space, paths, i, t);
+      const FootprintCells& ci = space.cells(i);
+      boxes[i] = Box{};
+      cover(boxes[i], ci.body(m[i].to.heading), m[i].to);
+      cover(boxes[i], ci.swept(m[i].from.heading, m[i].action), m[i].from);
+      if (t == 0) cover(boxes[i], ci.body(m[i].from.heading), m[i].from);
     }
-    for (int i = 0; i < n; ++i) {
-      if (paths[i].empty()) continue;
-      for (int j = i + 1; j < n; ++j) {
-        if (paths[j].empty()) continue;
-        const FootprintCells &ci = space.cells(i), &cj = space.cells(j);
-        Cell c;
-        if (t == 0 && CellSet::commonCell(ci.body(m[i].from.heading), {m[i].from.x, m[i].from.y},
-                                          cj.body(m[j].from.heading), {m[j].from.x, m[j].from.y}, c)) {
-          if (f(AgentConflict{AgentConflict::Kind::Vertex, i, j, 0, c})) return;
-          continue;
-        }
-        if (T == 0) continue;
-        if (CellSet::commonCell(ci.body(m[i].to.heading), {m[i].to.x, m[i].to.y}, cj.body(m[j].to.heading),
-                                {m[j].to.x, m[j].to.y}, c)) {
-          if (f(AgentConflict{AgentConflict::Kind::Vertex, i, j, t + 1, c})) return;
-        } else if (CellSet::commonCell(ci.swept(m[i].from.heading, m[i].action), {m[i].from.x, m[i].from.y},
-                                       cj.swept(m[j].from.heading, m[j].action), {m[j].from.x, m[j].from.y}, c)) {
-          if (f(AgentConflict{AgentConflict::Kind::Transfer, i, j, t, c})) return;
-        }
+    overlappingPairs(boxes, agents, by_x, pairs);
+    for (const auto& [i, j] : pairs) {
+      const FootprintCells &ci = space.cells(i), &cj = space.cells(j);
+      Cell c;
+      if (t == 0 && CellSet::commonCell(ci.body(m[i].from.heading), {m[i].from.x, m[i].from.y},
+                                        cj.body(m[j].from.heading), {m[j].from.x, m[j].from.y}, c)) {
+        if (f(AgentConflict{AgentConflict::Kind::Vertex, i, j, 0, c})) return;
+        continue;
+      }
+      if (T == 0) continue;
+      if (CellSet::commonCell(ci.body(m[i].to.heading), {m[i].to.x, m[i].to.y}, cj.body(m[j].to.heading),
+                              {m[j].to.x, m[j].to.y}, c)) {
+        if (f(AgentConflict{AgentConflict::Kind::Vertex, i, j, t + 1, c})) return;
+      } else if (CellSet::commonCell(ci.swept(m[i].from.heading, m[i].action), {m[i].from.x, m[i].from.y},
+                                     cj.swept(m[j].from.heading, m[j].action), {m[j].from.x, m[j].from.y}, c)) {
+        if (f(AgentConflict{AgentConflict::Kind::Transfer, i, j, t, c})) return;
       }
     }
   }
