@@ -5,11 +5,14 @@
 // configuration) is timed too and taken off.
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
 #include <chrono>
 #include <string>
 
 #include "bench_problems.h"
+#include "fleet_planner/solvers/lns/parking_plan.h"
 #include "fleet_planner/solvers/registry.h"
+#include "fleet_planner/solvers/search/search_space.h"
 #include "fleet_planner/solvers/solver.h"
 
 namespace fleet_planner::bench {
@@ -63,6 +66,34 @@ void BM_LaLacamConfigurationsGenerated(benchmark::State& state, const char* map)
   Problem* p = generatedProblem(map, static_cast<int>(state.range(0)), 1, error);
   lacamConfigurations(state, p, error);
 }
+/// LA-LNS's parking plan (parking_plan.h) of a generated city fleet, longest way first, for a
+/// fixed budget of 3 million expansions of its searches (most of them safe interval searches of
+/// legs home among hundreds of paths): `expansions/s`. The set-up (distance tables) is not
+/// timed.
+void BM_ParkingPlan(benchmark::State& state, const char* map) {
+  std::string error;
+  Problem* p = generatedProblem(map, static_cast<int>(state.range(0)), 1, error);
+  if (p == nullptr) return state.SkipWithError(error.c_str());
+  const Subproblem sub = wholeFleet(*p, -1);
+  const SearchSpace space(sub);
+  std::vector<int> order(space.numAgents());
+  for (int a = 0; a < space.numAgents(); ++a) order[a] = a;
+  std::stable_sort(order.begin(), order.end(), [&](int x, int y) {
+    return space.distance(x, space.start(x)) > space.distance(y, space.start(y));
+  });
+  ParkingPlanOptions o;
+  o.max_expansions = 3'000'000;
+  long long expansions = 0;
+  int home = 0;
+  for (auto _ : state) {
+    const std::optional<ParkingPlan> plan = parkingPlan(space, order, sub.deadline, o, expansions);
+    home = plan ? plan->robots_home : -1;
+  }
+  state.counters["expansions/s"] = benchmark::Counter(static_cast<double>(expansions), benchmark::Counter::kIsRate);
+  state.counters["home"] = home;
+}
+
+BENCHMARK_CAPTURE(BM_ParkingPlan, Paris_1_256, "Paris_1_256")->Arg(300)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_LaLacamConfigurations, maze-128-128-10, "maze-128-128-10")->Arg(50)->UseManualTime()->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_LaLacamConfigurations, Paris_1_256, "Paris_1_256")->Arg(140)->UseManualTime()->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_LaLacamConfigurations, AR0044SR, "AR0044SR")->Arg(100)->UseManualTime()->Unit(benchmark::kMillisecond);
