@@ -89,7 +89,8 @@ void BM_ParkingPlan(benchmark::State& state, const char* map) {
     const std::optional<ParkingPlan> plan = parkingPlan(space, order, sub.deadline, o, expansions);
     home = plan ? plan->robots_home : -1;
   }
-  state.counters["expansions/s"] = benchmark::Counter(static_cast<double>(expansions), benchmark::Counter::kIsRate);
+  state.counters["expansions/s"] =
+      benchmark::Counter(static_cast<double>(expansions), benchmark::Counter::kIsRate);
   state.counters["home"] = home;
 }
 

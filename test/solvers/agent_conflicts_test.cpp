@@ -33,7 +33,8 @@ struct GraphAt {
 // Every conflict, by checking every pair of agents at every step: at step 0 a pair's bodies
 // before it (a conflict there is the pair's only one of the step), then each pair's bodies
 // after the step, else its sweeps during the step; steps in order, pairs in order.
-std::vector<AgentConflict> everyConflict(const SearchSpace& space, const std::vector<StatePath>& paths) {
+std::vector<AgentConflict> everyConflict(const SearchSpace& space,
+                                         const std::vector<StatePath>& paths) {
   std::vector<AgentConflict> found;
   const int n = static_cast<int>(paths.size());
   int T = 0;
@@ -44,8 +45,9 @@ std::vector<AgentConflict> everyConflict(const SearchSpace& space, const std::ve
         if (paths[i].empty() || paths[j].empty()) continue;
         const GraphAt gi(space, paths, i, t), gj(space, paths, j, t);
         Cell c;
-        if (t == 0 && CellSet::commonCell(gi.cells.body(gi.from.heading), {gi.from.x, gi.from.y},
-                                          gj.cells.body(gj.from.heading), {gj.from.x, gj.from.y}, c)) {
+        if (t == 0 &&
+            CellSet::commonCell(gi.cells.body(gi.from.heading), {gi.from.x, gi.from.y},
+                                gj.cells.body(gj.from.heading), {gj.from.x, gj.from.y}, c)) {
           found.push_back({AgentConflict::Kind::Vertex, i, j, 0, c});
           continue;
         }
@@ -53,8 +55,9 @@ std::vector<AgentConflict> everyConflict(const SearchSpace& space, const std::ve
         if (CellSet::commonCell(gi.cells.body(gi.to.heading), {gi.to.x, gi.to.y},
                                 gj.cells.body(gj.to.heading), {gj.to.x, gj.to.y}, c)) {
           found.push_back({AgentConflict::Kind::Vertex, i, j, t + 1, c});
-        } else if (CellSet::commonCell(gi.cells.swept(gi.from.heading, gi.action), {gi.from.x, gi.from.y},
-                                       gj.cells.swept(gj.from.heading, gj.action), {gj.from.x, gj.from.y}, c)) {
+        } else if (CellSet::commonCell(
+                       gi.cells.swept(gi.from.heading, gi.action), {gi.from.x, gi.from.y},
+                       gj.cells.swept(gj.from.heading, gj.action), {gj.from.x, gj.from.y}, c)) {
           found.push_back({AgentConflict::Kind::Transfer, i, j, t, c});
         }
       }
@@ -70,7 +73,8 @@ bool same(const AgentConflict& x, const AgentConflict& y) {
 
 // The four queries of agent_conflicts.h against everyConflict() on `paths`; the number of
 // conflicts found.
-int checkQueries(const SearchSpace& space, const std::vector<StatePath>& paths, const std::string& where) {
+int checkQueries(const SearchSpace& space, const std::vector<StatePath>& paths,
+                 const std::string& where) {
   const std::vector<AgentConflict> all = everyConflict(space, paths);
   EXPECT_EQ(countConflicts(space, paths), static_cast<int>(all.size())) << where;
   const std::optional<AgentConflict> first = firstConflict(space, paths);

@@ -53,7 +53,8 @@ void overlappingPairs(const std::vector<Box>& boxes, const std::vector<int>& age
     const Box& a = boxes[by_x[k]];
     for (std::size_t l = k + 1; l < by_x.size() && boxes[by_x[l]].x0 <= a.x1; ++l) {
       const Box& b = boxes[by_x[l]];
-      if (b.y0 <= a.y1 && a.y0 <= b.y1) pairs.emplace_back(std::min(by_x[k], by_x[l]), std::max(by_x[k], by_x[l]));
+      if (b.y0 <= a.y1 && a.y0 <= b.y1)
+        pairs.emplace_back(std::min(by_x[k], by_x[l]), std::max(by_x[k], by_x[l]));
     }
   }
   std::sort(pairs.begin(), pairs.end());
@@ -87,17 +88,19 @@ void forEachConflict(const SearchSpace& space, const std::vector<StatePath>& pat
     for (const auto& [i, j] : pairs) {
       const FootprintCells &ci = space.cells(i), &cj = space.cells(j);
       Cell c;
-      if (t == 0 && CellSet::commonCell(ci.body(m[i].from.heading), {m[i].from.x, m[i].from.y},
-                                        cj.body(m[j].from.heading), {m[j].from.x, m[j].from.y}, c)) {
+      if (t == 0 &&
+          CellSet::commonCell(ci.body(m[i].from.heading), {m[i].from.x, m[i].from.y},
+                              cj.body(m[j].from.heading), {m[j].from.x, m[j].from.y}, c)) {
         if (f(AgentConflict{AgentConflict::Kind::Vertex, i, j, 0, c})) return;
         continue;
       }
       if (T == 0) continue;
-      if (CellSet::commonCell(ci.body(m[i].to.heading), {m[i].to.x, m[i].to.y}, cj.body(m[j].to.heading),
-                              {m[j].to.x, m[j].to.y}, c)) {
+      if (CellSet::commonCell(ci.body(m[i].to.heading), {m[i].to.x, m[i].to.y},
+                              cj.body(m[j].to.heading), {m[j].to.x, m[j].to.y}, c)) {
         if (f(AgentConflict{AgentConflict::Kind::Vertex, i, j, t + 1, c})) return;
-      } else if (CellSet::commonCell(ci.swept(m[i].from.heading, m[i].action), {m[i].from.x, m[i].from.y},
-                                     cj.swept(m[j].from.heading, m[j].action), {m[j].from.x, m[j].from.y}, c)) {
+      } else if (CellSet::commonCell(
+                     ci.swept(m[i].from.heading, m[i].action), {m[i].from.x, m[i].from.y},
+                     cj.swept(m[j].from.heading, m[j].action), {m[j].from.x, m[j].from.y}, c)) {
         if (f(AgentConflict{AgentConflict::Kind::Transfer, i, j, t, c})) return;
       }
     }
