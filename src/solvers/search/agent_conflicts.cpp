@@ -1,7 +1,6 @@
 #include "fleet_planner/solvers/search/agent_conflicts.h"
 
 #include <algorithm>
-#include <climits>
 
 #include "fleet_planner/model/collision.h"
 #include "fleet_planner/solvers/search/space_time_astar.h"
@@ -27,17 +26,10 @@ Motion motionAt(const SearchSpace& space, const std::vector<StatePath>& paths, i
   return {g.pose(s), g.pose(n), stepAction(g, s, n)};
 }
 
-// A box of map cells, inclusive; empty as constructed.
+// A box of map cells, inclusive.
 struct Box {
-  int x0 = INT_MAX, y0 = INT_MAX, x1 = INT_MIN, y1 = INT_MIN;
+  int x0, y0, x1, y1;
 };
-
-// Grows `box` to hold `set` placed at p.
-void cover(Box& box, const CellSet& set, const GridPose& p) {
-  if (set.empty()) return;
-  box = {std::min(box.x0, p.x + set.minX()), std::min(box.y0, p.y + set.minY()),
-         std::max(box.x1, p.x + set.maxX()), std::max(box.y1, p.y + set.maxY())};
-}
 
 // The pairs (i < j), sorted, whose boxes overlap, found by sorting on the boxes' left edges and
 // sweeping: two footprints whose boxes do not overlap share no cell, so checking these pairs
@@ -62,8 +54,9 @@ void overlappingPairs(const std::vector<Box>& boxes, const std::vector<int>& age
 
 // Calls f(conflict) for conflicts in step order (at one step by agent pair, a pair's vertex
 // conflict at t + 1 before its transfer of t); stops when f returns true. Each step checks only
-// the pairs whose boxes (bodies after the step, sweeps of the step, and at step 0 the bodies
-// before it) overlap: a fleet of hundreds has few such pairs among its n^2 / 2.
+// the pairs whose sweeps' boxes overlap: a sweep holds the bodies before and after its action
+// (footprint_cells.h), so it bounds every cell of the three checks, and a fleet of hundreds has
+// few such pairs among its n^2 / 2.
 template <class F>
 void forEachConflict(const SearchSpace& space, const std::vector<StatePath>& paths, F&& f) {
   const int n = static_cast<int>(paths.size());
@@ -78,11 +71,9 @@ void forEachConflict(const SearchSpace& space, const std::vector<StatePath>& pat
   for (int t = 0; t < std::max(T, 1); ++t) {
     for (int i : agents) {
       m[i] = motionAt(space, paths, i, t);
-      const FootprintCells& ci = space.cells(i);
-      boxes[i] = Box{};
-      cover(boxes[i], ci.body(m[i].to.heading), m[i].to);
-      cover(boxes[i], ci.swept(m[i].from.heading, m[i].action), m[i].from);
-      if (t == 0) cover(boxes[i], ci.body(m[i].from.heading), m[i].from);
+      const CellSet& sweep = space.cells(i).swept(m[i].from.heading, m[i].action);
+      const GridPose& p = m[i].from;
+      boxes[i] = {p.x + sweep.minX(), p.y + sweep.minY(), p.x + sweep.maxX(), p.y + sweep.maxY()};
     }
     overlappingPairs(boxes, agents, by_x, pairs);
     for (const auto& [i, j] : pairs) {
