@@ -63,6 +63,7 @@ void LaLns::configure(const BackendOptionValues& values) {
   bind.number("parking_share", o.parking_share, 0, 1);
   bind.integer("parking_orders", o.parking_orders, 1, 3);
   bind.number("parking_order_slack", o.parking_order_slack, 1, 100);
+  bind.integer("portfolio_robots", o.portfolio_robots, 0, 1000000);
   bind.flag("end_game", o.end_game);
   bind.number("end_game_share", o.end_game_share, 0, 1);
   bind.flag("splice", o.splice);

@@ -2,7 +2,9 @@
 #include "fleet_planner/solvers/lns/la_lns.h"
 
 #include <algorithm>
+#include <exception>
 #include <numeric>
+#include <thread>
 
 #include "fleet_planner/solvers/lns/end_game.h"
 #include "fleet_planner/solvers/lns/parking_orders.h"
@@ -32,9 +34,9 @@ int stallRepairs(const LaLnsOptions& o, int agents) {
 LnsSearch::LnsSearch(const SearchSpace& space, const Subproblem& problem,
                      const LaLnsOptions& options, SolveStats& stats)
     : space_(space),
-      problem_(problem),
+      problem_(&problem),
       options_(options),
-      stats_(stats),
+      stats_(&stats),
       n_(space.numAgents()),
       table_(space),
       rng_(problem.seed),
@@ -48,7 +50,7 @@ LnsSearch::LnsSearch(const SearchSpace& space, const Subproblem& problem,
 }
 
 SolveResult LnsSearch::run() {
-  if (!problem_.returning.empty()) {
+  if (!problem_->returning.empty()) {
     if (std::optional<SolveResult> cleared = clearedStage()) return *cleared;
   }
   std::vector<int> order(n_);
@@ -75,27 +77,88 @@ SolveResult LnsSearch::run() {
     ++planned_;
   }
   for (int a = 0; a < n_; ++a) partners_[a] = table_.partners(a);
+  if (options_.portfolio_robots > 0 && n_ >= options_.portfolio_robots && problem_->threads >= 2 &&
+      collidingPairs() > 0) {
+    return race();
+  }
+  return repairs(nullptr, 0);
+}
+
+SolveResult LnsSearch::repairs(LnsRace* race, int me) {
+  long long made = 0;
+  // An outcome after `made` repairs: recorded in a race.
+  auto outcome = [&](SolveResult r) {
+    if (race) race->outcome_at[me] = made;
+    return r;
+  };
   while (true) {
+    if (race && race->beaten(me, made)) return SolveResult{};
     if (collidingPairs() == 0) {
       // The table's answer, checked by the backends' own conflict code before it is returned.
       std::vector<StatePath> paths(n_);
       for (int a = 0; a < n_; ++a) paths[a] = table_.path(a);
       const std::optional<AgentConflict> c = firstConflict(space_, paths);
-      if (!c) return success(paths);
+      if (!c) return outcome(success(paths));
       link(c->a, c->b);
     }
     if (std::optional<SolveResult> stop = outOfBudget()) return *stop;
-    if (growth_.exhausted() > 0 && mayGiveUp()) {
-      return timeout("stuck after " + std::to_string(stallRepairs(options_, n_)) +
-                     " repairs of every robot without fewer colliding pairs");
+    // Only the first search asks the caller (and so gives up in a race).
+    if (me == 0 && growth_.exhausted() > 0 && mayGiveUp()) {
+      return outcome(timeout("stuck after " + std::to_string(stallRepairs(options_, n_)) +
+                             " repairs of every robot without fewer colliding pairs"));
     }
+    if (race && race->beaten(me, made + 1)) return SolveResult{};
     repair();
+    ++made;
+    if (race) race->repairs[me] = made;
     if (proof_) {
       SolveResult r = failedResult(SolveStatus::Infeasible, *proof_);
       r.culprits = proof_culprits_;
-      return r;
+      return outcome(r);
     }
   }
+}
+
+SolveResult LnsSearch::race() {
+  LnsRace race;
+  SolveStats other_stats;
+  // The copy: the same first plan and state, another seed, its own statistics, and a deadline
+  // that this thread calls off once the copy can no longer win.
+  Subproblem other_problem = *problem_;
+  other_problem.seed = problem_->seed ^ 0x9e3779b97f4a7c15ULL;
+  other_problem.deadline =
+      Deadline(problem_->deadline.end(), &race.call_off).withMemoryGuard(problem_->deadline.memoryGuard());
+  LnsSearch other(*this);
+  other.stats_ = &other_stats;
+  other.rng_ = Rng(other_problem.seed);
+  other.problem_ = &other_problem;
+  SolveResult theirs;
+  std::exception_ptr failure;  // search 1's, unless it was called off first
+  std::thread helper([&] {
+    try {
+      theirs = other.repairs(&race, 1);
+    } catch (...) {
+      if (!race.call_off) failure = std::current_exception();
+    }
+  });
+  SolveResult mine;
+  try {
+    mine = repairs(&race, 0);
+  } catch (...) {
+    race.call_off = true;
+    helper.join();
+    throw;
+  }
+  // Search 1 is called off unless it may still reach an outcome before this one's.
+  const long long at = race.outcome_at[0].load();
+  if (at == LnsRace::kNone || race.repairs[1].load() + 1 >= at) race.call_off = true;
+  helper.join();
+  if (failure) std::rethrow_exception(failure);
+  stats_->low_level_expansions += other_stats.low_level_expansions;
+  stats_->high_level_nodes += other_stats.high_level_nodes;
+  const long long theirs_at = race.outcome_at[1].load();
+  const bool they_win = theirs_at != LnsRace::kNone && (at == LnsRace::kNone || theirs_at < at);
+  return they_win ? theirs : mine;
 }
 
 // A packed subproblem: first the robots that get home one at a time, pushing the others aside
@@ -104,20 +167,20 @@ std::optional<SolveResult> LnsSearch::parkFirst(const std::vector<int>& order, s
   ParkingPlanOptions o;
   o.max_pockets = std::max(1, options_.pockets);
   o.max_expansions = std::max(options_.parking_expansions, options_.parking_expansions_per_robot * n_);
-  const Deadline deadline = problem_.deadline.within(problem_.deadline.remaining() * options_.parking_share);
+  const Deadline deadline = problem_->deadline.within(problem_->deadline.remaining() * options_.parking_share);
   o.order_slack = options_.parking_order_slack;
   // The orders of parking_orders.h, one of them kept (fastestParkingPlan).
   const std::vector<std::vector<int>> orders = parkingOrders(space_, order, options_.parking_orders);
   const std::optional<ParkingPlan> plan =
-      fastestParkingPlan(space_, orders, deadline, o, problem_.threads, stats_.low_level_expansions);
+      fastestParkingPlan(space_, orders, deadline, o, problem_->threads, stats_->low_level_expansions);
   if (!plan) return std::nullopt;
   if (plan->robots_home == n_) return success(plan->paths);
   if (options_.end_game) {
     const Deadline end_deadline =
-        problem_.deadline.within(problem_.deadline.remaining() * options_.end_game_share);
+        problem_->deadline.within(problem_->deadline.remaining() * options_.end_game_share);
     const std::optional<std::vector<StatePath>> finished =
-        endGame(space_, problem_, plan->paths, plan->home, options_, end_deadline, EndGameOptions{},
-                stats_.low_level_expansions);
+        endGame(space_, *problem_, plan->paths, plan->home, options_, end_deadline, EndGameOptions{},
+                stats_->low_level_expansions);
     if (finished) return success(*finished);
   }
   // A subproblem of fewer than twice `parking_robots` robots that the parking plan leaves
@@ -145,8 +208,8 @@ StatePath LnsSearch::shortestAlone(int a) {
   if (ideal_[a].empty() && !ideal_absent_[a]) {
     const SoftPathTable nobody(space_);
     const SafeIntervalResult r =
-        safeIntervalSearch(space_, a, nobody, problem_.deadline, options_.max_expansions_per_search);
-    stats_.low_level_expansions += r.expansions;
+        safeIntervalSearch(space_, a, nobody, problem_->deadline, options_.max_expansions_per_search);
+    stats_->low_level_expansions += r.expansions;
     if (r.outcome == SafeIntervalResult::Outcome::Found) ideal_[a] = r.path;
   }
   return ideal_[a];
@@ -158,15 +221,15 @@ StatePath LnsSearch::shortestAlone(int a) {
 std::optional<SolveResult> LnsSearch::clearedStage() {
   std::vector<bool> returning(n_, false);
   Subproblem without;
-  without.instance = problem_.instance;
-  without.graphs = problem_.graphs;
-  without.moving = problem_.moving;
-  without.seed = problem_.seed;
-  without.deadline = problem_.deadline.within(std::min(problem_.deadline.remaining() / 10, 2.0));
+  without.instance = problem_->instance;
+  without.graphs = problem_->graphs;
+  without.moving = problem_->moving;
+  without.seed = problem_->seed;
+  without.deadline = problem_->deadline.within(std::min(problem_->deadline.remaining() / 10, 2.0));
   std::vector<int> movers;
   for (int a = 0; a < n_; ++a) {
     const int r = space_.robot(a);
-    returning[a] = std::any_of(problem_.returning.begin(), problem_.returning.end(),
+    returning[a] = std::any_of(problem_->returning.begin(), problem_->returning.end(),
                                [&](const StaticFootprint& f) { return f.robot == r; });
     if (!returning[a]) {
       movers.push_back(a);
@@ -175,28 +238,28 @@ std::optional<SolveResult> LnsSearch::clearedStage() {
   }
   if (movers.empty() || static_cast<int>(movers.size()) > options_.stage_robots) return std::nullopt;
   const SolveResult planned = LaLns(options_).solve(without);
-  stats_.low_level_expansions += planned.stats.low_level_expansions;
+  stats_->low_level_expansions += planned.stats.low_level_expansions;
   if (!planned.success()) return std::nullopt;
   std::vector<StatePath> alone(n_);
   std::vector<StatePath> moved = toStatePaths(space_, movers, planned.paths);
   for (std::size_t k = 0; k < movers.size(); ++k) alone[movers[k]] = std::move(moved[k]);
   const std::optional<std::vector<StatePath>> paths =
-      clearTheStage(space_, returning, alone, problem_.deadline, options_.pockets,
-                    options_.max_expansions_per_search, stats_.low_level_expansions);
+      clearTheStage(space_, returning, alone, problem_->deadline, options_.pockets,
+                    options_.max_expansions_per_search, stats_->low_level_expansions);
   if (!paths) return std::nullopt;
   return success(*paths);
 }
 
 bool LnsSearch::mayGiveUp() {
-  if (!may_give_up_) may_give_up_ = problem_.may_give_up && problem_.may_give_up();
+  if (!may_give_up_) may_give_up_ = problem_->may_give_up && problem_->may_give_up();
   return *may_give_up_;
 }
 
 std::optional<SolveResult> LnsSearch::outOfBudget() const {
-  if (problem_.deadline.cancelled()) return failedResult(SolveStatus::Cancelled, "cancelled");
-  if (problem_.deadline.expired()) return timeout("time limit reached");
-  if (problem_.max_expansions >= 0 && stats_.low_level_expansions > problem_.max_expansions)
-    return timeout("expansion budget of " + std::to_string(problem_.max_expansions) + " used up");
+  if (problem_->deadline.cancelled()) return failedResult(SolveStatus::Cancelled, "cancelled");
+  if (problem_->deadline.expired()) return timeout("time limit reached");
+  if (problem_->max_expansions >= 0 && stats_->low_level_expansions > problem_->max_expansions)
+    return timeout("expansion budget of " + std::to_string(problem_->max_expansions) + " used up");
   return std::nullopt;
 }
 
@@ -258,9 +321,9 @@ std::optional<SolveResult> LnsSearch::initialPath(int a, StatePath& path) {
 SoftSearchResult LnsSearch::search(int a) {
   // A collision-free path first (safe intervals: long waits are cheap there), if there is one;
   // a robot whose target is passed late waits at its start where it can (safeIntervalHome).
-  const SafeIntervalResult free = safeIntervalHome(space_, a, table_, space_.start(a), 0, problem_.deadline,
+  const SafeIntervalResult free = safeIntervalHome(space_, a, table_, space_.start(a), 0, problem_->deadline,
                                                    options_.max_expansions_per_search);
-  stats_.low_level_expansions += free.expansions;
+  stats_->low_level_expansions += free.expansions;
   if (free.outcome == SafeIntervalResult::Outcome::Found) {
     escalation_[a] = 1;
     SoftSearchResult r;
@@ -277,8 +340,8 @@ SoftSearchResult LnsSearch::search(int a) {
   o.collision_cost = options_.collision_cost * escalation_[a];
   o.max_expansions = options_.max_expansions_per_search;
   o.heuristic_weight = options_.heuristic_weight;
-  SoftSearchResult r = softPathSearch(space_, a, table_, problem_.deadline, o);
-  stats_.low_level_expansions += r.expansions;
+  SoftSearchResult r = softPathSearch(space_, a, table_, problem_->deadline, o);
+  stats_->low_level_expansions += r.expansions;
   if (r.outcome == SoftSearchResult::Outcome::Found) {
     escalation_[a] = r.collisions == 0 ? 1 : std::min(escalation_[a] * 2, 64);
   } else if (r.outcome == SoftSearchResult::Outcome::NodeLimit) {

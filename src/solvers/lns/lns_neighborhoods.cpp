@@ -97,8 +97,8 @@ std::vector<int> LnsSearch::knot() {
 // Shortest path of a around hard obstacles only (empty if none or out of time); cached.
 const StatePath& LnsSearch::idealPath(int a) {
   if (ideal_[a].empty() && !ideal_absent_[a]) {
-    const LowLevelResult r = spaceTimeAStar(space_, a, AgentConstraints{}, problem_.deadline);
-    stats_.low_level_expansions += r.expansions;
+    const LowLevelResult r = spaceTimeAStar(space_, a, AgentConstraints{}, problem_->deadline);
+    stats_->low_level_expansions += r.expansions;
     if (r.outcome == LowLevelResult::Outcome::Found) ideal_[a] = r.path;
     ideal_absent_[a] = r.outcome == LowLevelResult::Outcome::NoPath;
   }

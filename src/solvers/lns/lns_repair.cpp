@@ -43,17 +43,17 @@ bool LnsSearch::planOneByOne(const std::vector<int>& group) {
 bool LnsSearch::planTogether(const std::vector<int>& group) {
   for (const std::vector<int>& order : {group, std::vector<int>(group.rbegin(), group.rend())}) {
     const std::optional<std::vector<StatePath>> paths =
-        orderedRepair(space_, table_, order, problem_.deadline,
-                      options_.max_expansions_per_search, stats_.low_level_expansions);
+        orderedRepair(space_, table_, order, problem_->deadline,
+                      options_.max_expansions_per_search, stats_->low_level_expansions);
     if (!paths) continue;
     for (std::size_t k = 0; k < order.size(); ++k) table_.insert(order[k], (*paths)[k]);
     return true;
   }
   if (planThroughPocket(group)) return true;
-  const double seconds = std::min(options_.joint_seconds, problem_.deadline.remaining() / 4);
+  const double seconds = std::min(options_.joint_seconds, problem_->deadline.remaining() / 4);
   const std::vector<StatePath> paths =
-      jointRepair(space_, problem_, table_, group, seconds, options_.joint_max_expansions,
-                  rng_.next(), stats_.low_level_expansions);
+      jointRepair(space_, *problem_, table_, group, seconds, options_.joint_max_expansions,
+                  rng_.next(), stats_->low_level_expansions);
   for (std::size_t k = 0; k < paths.size(); ++k) table_.insert(group[k], paths[k]);
   if (!paths.empty()) return true;
   if (planAlone(group, seconds)) return true;
@@ -67,8 +67,8 @@ bool LnsSearch::planTogether(const std::vector<int>& group) {
   JointSearchOptions o;
   o.collision_cost = options_.collision_cost;
   o.max_nodes = options_.joint_search_nodes;
-  const JointSearchResult r = jointPathSearch(space_, group, table_, problem_.deadline, o);
-  stats_.low_level_expansions += r.expansions;
+  const JointSearchResult r = jointPathSearch(space_, group, table_, problem_->deadline, o);
+  stats_->low_level_expansions += r.expansions;
   if (r.outcome == JointSearchResult::Outcome::Found) {
     for (std::size_t k = 0; k < group.size(); ++k) table_.insert(group[k], r.paths[k]);
     return true;
@@ -149,8 +149,8 @@ bool LnsSearch::planTogetherLater(const std::vector<int>& group, JointSearchOpti
       if (near > t0 + 1) merged_from.push_back(near);
       for (const int static_from : merged_from) {
         options.static_from = static_from;
-        const JointSearchResult r = jointPathSearch(space_, group, table_, problem_.deadline, options);
-        stats_.low_level_expansions += r.expansions;
+        const JointSearchResult r = jointPathSearch(space_, group, table_, problem_->deadline, options);
+        stats_->low_level_expansions += r.expansions;
         if (r.outcome == JointSearchResult::Outcome::Expired) return false;
         if (r.outcome != JointSearchResult::Outcome::Found) continue;
         const StatePath prefix = held >= 0 ? heldPrefix(group[held], t0) : StatePath{};
@@ -174,9 +174,9 @@ bool LnsSearch::planTogetherLater(const std::vector<int>& group, JointSearchOpti
 // its start throughout if there is no such way.
 StatePath LnsSearch::heldPrefix(int a, int t0) {
   const StateId start = joint_before_[a][0];
-  const SafeIntervalResult r = safeIntervalSegment(space_, a, table_, start, 0, start, t0, 0, problem_.deadline,
+  const SafeIntervalResult r = safeIntervalSegment(space_, a, table_, start, 0, start, t0, 0, problem_->deadline,
                                                    options_.max_expansions_per_search);
-  stats_.low_level_expansions += r.expansions;
+  stats_->low_level_expansions += r.expansions;
   if (r.outcome == SafeIntervalResult::Outcome::Found) return r.path;
   return StatePath{start};
 }
@@ -186,18 +186,18 @@ StatePath LnsSearch::heldPrefix(int a, int t0) {
 // 1,709 configurations where LA-CBS and the soft repairs ran out of time). It sees only the
 // static obstacles; the repair keeps its paths only if the colliding pairs do not grow.
 bool LnsSearch::planAlone(const std::vector<int>& group, double seconds) {
-  if (options_.alone_expansions <= 0 || !problem_.moving.empty()) return false;
+  if (options_.alone_expansions <= 0 || !problem_->moving.empty()) return false;
   Subproblem sub;
-  sub.instance = problem_.instance;
-  sub.graphs = problem_.graphs;
-  sub.blocked = problem_.blocked;
-  sub.returning = problem_.returning;
+  sub.instance = problem_->instance;
+  sub.graphs = problem_->graphs;
+  sub.blocked = problem_->blocked;
+  sub.returning = problem_->returning;
   for (int a : group) sub.robots.push_back(space_.robot(a));
-  sub.deadline = problem_.deadline.within(seconds);
+  sub.deadline = problem_->deadline.within(seconds);
   sub.seed = rng_.next();
   sub.max_expansions = options_.alone_expansions;
   const SolveResult r = LaLacam().solve(sub);
-  stats_.low_level_expansions += r.stats.low_level_expansions;
+  stats_->low_level_expansions += r.stats.low_level_expansions;
   if (!r.success()) return false;
   const std::vector<StatePath> paths = toStatePaths(space_, group, r.paths);
   for (std::size_t k = 0; k < group.size(); ++k) table_.insert(group[k], paths[k]);
@@ -225,8 +225,8 @@ bool LnsSearch::planThroughPocket(const std::vector<int>& group) {
       if (a != through) parkers.push_back(a);
     }
     const std::optional<std::vector<StatePath>> paths =
-        pocketRepair(space_, table_, through, parkers, idealPath(through), problem_.deadline, o,
-                     stats_.low_level_expansions);
+        pocketRepair(space_, table_, through, parkers, idealPath(through), problem_->deadline, o,
+                     stats_->low_level_expansions);
     if (!paths) continue;
     table_.insert(through, (*paths)[0]);
     for (std::size_t i = 0; i < parkers.size(); ++i) table_.insert(parkers[i], (*paths)[i + 1]);
@@ -247,9 +247,9 @@ void LnsSearch::provePair(const std::vector<int>& group) {
       const int a = std::min(group[i], group[j]), b = std::max(group[i], group[j]);
       if (!pairs_tried_.insert({a, b}).second) continue;
       // No moving obstacles, no other robot of this subproblem.
-      const SolveResult r = searchPairAlone(problem_, space_.robot(a), space_.robot(b), options_.pair_proof_expansions,
-                                            problem_.deadline.within(problem_.deadline.remaining() / 8));
-      stats_.low_level_expansions += r.stats.low_level_expansions;
+      const SolveResult r = searchPairAlone(*problem_, space_.robot(a), space_.robot(b), options_.pair_proof_expansions,
+                                            problem_->deadline.within(problem_->deadline.remaining() / 8));
+      stats_->low_level_expansions += r.stats.low_level_expansions;
       if (r.status != SolveStatus::Infeasible) continue;
       proof_culprits_ = {space_.robot(a), space_.robot(b)};
       proof_ = space_.label(a) + " and " + space_.label(b) +
@@ -327,9 +327,9 @@ bool LnsSearch::splice(int a, bool fewer) {
     return partners.size() < had;
   };
   const SpliceResult r =
-      spliceAround(space_, a, table_, pick(starts), /*delays=*/true, problem_.deadline,
+      spliceAround(space_, a, table_, pick(starts), /*delays=*/true, problem_->deadline,
                    options_.max_expansions_per_search, fewer ? meets : std::function<bool(const StatePath&)>{});
-  stats_.low_level_expansions += r.expansions;
+  stats_->low_level_expansions += r.expansions;
   if (!r.path) return false;
   if (!fewer) partners = table_.partners(a, *r.path);
   if (partners.size() > had) return false;
@@ -338,7 +338,7 @@ bool LnsSearch::splice(int a, bool fewer) {
 }
 
 void LnsSearch::repair() {
-  ++stats_.high_level_nodes;
+  ++stats_->high_level_nodes;
   if (options_.splice) {
     splices();
     if (collidingPairs() == 0) return;

@@ -16,6 +16,7 @@
 
 #include "fleet_planner/runtime/random.h"
 #include "fleet_planner/solvers/lns/la_lns.h"
+#include "fleet_planner/solvers/lns/lns_race.h"
 #include "fleet_planner/solvers/lns/neighborhood_growth.h"
 #include "fleet_planner/solvers/search/joint_path_search.h"
 #include "fleet_planner/solvers/search/search_space.h"
@@ -38,6 +39,12 @@ class LnsSearch {
   SolveResult run();
 
  private:
+  // The loop of repairs from the first plan; in a race, as search `me` (then a search that
+  // cannot win returns early with no status, and the outcomes are recorded in `race`).
+  SolveResult repairs(LnsRace* race, int me);
+  // The first plan repaired by this search and a copy with another seed on a second thread.
+  SolveResult race();
+
   std::optional<SolveResult> outOfBudget() const;
 
   // Subproblem::may_give_up, asked once.
@@ -152,9 +159,9 @@ class LnsSearch {
   SolveResult success(const std::vector<StatePath>& paths) const;
 
   const SearchSpace& space_;
-  const Subproblem& problem_;
+  const Subproblem* problem_;  // a pointer: the copy that races this search has its own deadline
   const LaLnsOptions& options_;
-  SolveStats& stats_;
+  SolveStats* stats_;  // a pointer: the copy that races this search counts in its own
   const int n_;
   SoftPathTable table_;
   Rng rng_;

@@ -114,6 +114,11 @@ struct LaLnsOptions {
   /// real maps but costs a third more time on two threads: not the default.
   int parking_orders = 2;
   double parking_order_slack = 1;
+  /// A subproblem of at least this many robots with two threads (the fleet solved as one):
+  /// after its first plan, a second search with another seed repairs a copy of it on the other
+  /// thread, and the outcome reached after fewer repairs is kept (ties: the first search's), so
+  /// that the answer does not depend on which thread runs faster. 0: never.
+  int portfolio_robots = 100;
   /// A parking plan that leaves robots short of their targets is finished by its end game
   /// (end_game.h): those robots and the robots on their ways planned together once everybody
   /// else has stopped, in at most `end_game_share` of the time left.
