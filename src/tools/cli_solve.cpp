@@ -105,8 +105,9 @@ void addSolveCommand(CLI::App& app) {
   cmd->add_option("--seed", o->planning.seed, "random seed (same seed, same plan)");
   cmd->add_option("--out", o->out, "write the plan (YAML) here on success");
   cmd->add_option("--threads", o->planning.threads,
-                  "threads for graphs, relation graphs, subproblems and a whole fleet's two parking plans; "
-                  "the plan does not depend on it (default 0: the machine's cores)")
+                  "threads for graphs, relation graphs, subproblems and a whole fleet's two parking plans and "
+                  "two LA-LNS searches; the plan is the same for any count from 2 on, and for 1 too unless a "
+                  "fleet of 100 robots or more is solved as one subproblem (default 0: the machine's cores)")
       ->check(CLI::NonNegativeNumber);
   cmd->add_option(
          "--lattice-step", o->planning.lattice_step,
