@@ -71,7 +71,8 @@ class Refiner {
       : instance_(instance), graphs_(graphs), paths_(paths), deadline_(deadline), options_(options),
         n_(static_cast<int>(paths.size())),
         max_expansions_(std::min(options.max_expansions, options.expansions_per_robot * n_)),
-        lower_(n_, 0), distance_(n_, -1), ideal_(n_) {
+        lower_(n_, 0), distance_(n_, -1), ideal_(n_),
+        single_failed_at_(n_, -1), group_failed_at_(n_, -1) {
     // Every robot's path in one soft path table, kept up to date as paths are replaced: a
     // search reads the others' paths from it (its own is ignored), and only the searched
     // robot's distance table is built, for the search.
@@ -143,11 +144,14 @@ class Refiner {
       if (outOfBudget()) break;
       const int cost = costOf(i);
       if (cost <= bound(i)) continue;
+      if (single_failed_at_[i] == changes_) continue;  // the same search again: it fails again
       ++stats_.searches;
       Path better = timed([&] { return cheaperPath(i, cost); });
-      if (better.empty()) continue;
-      const int new_cost = pathCost(better, instance_.robots[i].target);
-      if (new_cost < 0 || new_cost >= cost) continue;
+      const int new_cost = better.empty() ? -1 : pathCost(better, instance_.robots[i].target);
+      if (new_cost < 0 || new_cost >= cost) {
+        if (!deadline_.expired()) single_failed_at_[i] = changes_;
+        continue;
+      }
       stats_.soc_saved += cost - new_cost;
       paths_[i] = std::move(better);
       if (!track(i)) return improved + 1;
@@ -164,12 +168,17 @@ class Refiner {
       if (outOfBudget()) break;
       // The group's robots move too: only i's distance bounds its cost.
       if (distance_[i] < 0 || costOf(i) <= distance_[i]) continue;
+      if (group_failed_at_[i] == changes_) continue;  // the same group, the same search
       if (ideal_[i].empty()) ideal_[i] = idealPath(instance_, graphs_, i, deadline_);
       std::vector<int> group = blockers(graphs_, paths_, i, ideal_[i], options_.group_size - 1);
       if (group.empty()) continue;
       group.push_back(i);
       std::sort(group.begin(), group.end());
-      if (replanGroup(group)) ++improved;
+      if (replanGroup(group)) {
+        ++improved;
+      } else if (!deadline_.expired()) {
+        group_failed_at_[i] = changes_;
+      }
     }
     return improved;
   }
@@ -229,6 +238,7 @@ class Refiner {
     if (states.empty()) return tracked_ = false;
     if (table_->contains(i)) table_->remove(i);
     table_->insert(i, states);
+    ++changes_;
     return true;
   }
 
@@ -280,6 +290,12 @@ class Refiner {
   std::vector<int> lower_;     // lower bounds on each robot's cost (bound)
   std::vector<int> distance_;  // each robot's distance to its target, learnt from its search; -1: not yet
   std::vector<Path> ideal_;
+  // A search depends only on the paths (and the deadline), so a robot whose search failed is
+  // not searched again until some path has changed: changes_ counts the paths put in the
+  // table, *_failed_at_[i] is its value when robot i's single (group) search last failed.
+  long long changes_ = 0;
+  std::vector<long long> single_failed_at_;
+  std::vector<long long> group_failed_at_;
   double longest_search_s_ = 0.0;
   std::unique_ptr<SearchSpace> space_;  // every robot; distance tables only while searched
   std::unique_ptr<SoftPathTable> table_;

@@ -182,6 +182,36 @@ TEST(PlanRefinement, SearchesFirstTheRobotThatCanGainMost) {
   EXPECT_EQ(plan.paths[0], a);
 }
 
+TEST(PlanRefinement, DoesNotRepeatASearchThatFailedOnTheSamePaths) {
+  // Two rooms. In the lower one a makes a detour that can go (cost 13, shortest 7); in the
+  // upper one c drives round d, who stands on its target for good (cost 12: the cheapest way
+  // round). Pass 1 improves a and then searches c in vain; pass 2 has nothing to search: a is
+  // at its shortest, and c's search would run on the same paths as the one that failed.
+  const GridMap map =
+      test::mapFromRows({".........", ".........", ".........", "@@@@@@@@@", ".........", ".........", "........."});
+  Instance in;
+  in.robots = {dot("a", {0, 5, 0}, {7, 5, 0}), dot("c", {0, 1, 0}, {6, 1, 0}), dot("d", {3, 1, 0}, {3, 1, 0})};
+  using A = Action;
+  const std::vector<Action> round = {A::Forward, A::Forward, A::RotateCcw, A::Forward, A::RotateCw, A::Forward,
+                                     A::Forward, A::RotateCw, A::Forward, A::RotateCcw, A::Forward, A::Forward};
+  std::vector<Action> detour = round;
+  detour.insert(detour.begin() + 5, A::Forward);  // three cells along the other row instead of two
+  const Path c = pathOf(in.robots[1].start, round);
+  Plan plan = planOf({pathOf(in.robots[0].start, detour), c, {in.robots[2].start}});
+  ASSERT_EQ(plan.paths[0].back(), in.robots[0].target);
+  ASSERT_EQ(plan.paths[1].back(), in.robots[1].target);
+  ASSERT_TRUE(validatePlan(map, in, plan).valid());
+  const FleetGraphs graphs(map, footprintsOf(in));
+  RefinementOptions options;
+  options.group_size = 0;
+  const RefinementStats stats = refinePlan(in, graphs, plan.paths, Deadline::in(5), options);
+  EXPECT_TRUE(validatePlan(map, in, plan).valid());
+  EXPECT_EQ(pathCost(plan.paths[0], in.robots[0].target), 7);
+  EXPECT_EQ(plan.paths[1], c);
+  EXPECT_EQ(stats.passes, 2);
+  EXPECT_EQ(stats.searches, 2);  // a and c in pass 1
+}
+
 // Refinement's budget of expansions holds for its group searches too: a search that starts
 // within the budget may run past it only until its next check (a single search: its own limit;
 // a group search: the low-level searches of LA-CBS's root or of one node, a dozen here).
