@@ -10,7 +10,6 @@
 #include "fleet_planner/model/collision.h"
 #include "fleet_planner/solvers/search/agent_constraints.h"
 #include "fleet_planner/solvers/search/safe_interval_search.h"
-#include "fleet_planner/solvers/cbs/la_cbs.h"
 #include "fleet_planner/solvers/search/search_space.h"
 #include "fleet_planner/solvers/search/space_time_astar.h"
 #include "path_steps.h"
@@ -160,21 +159,22 @@ class Refiner {
     return improved;
   }
 
-  // Robot i and those in the way of its ideal path, replanned together by LA-CBS around the
-  // rest; kept when their sum of costs drops and the makespan does not grow.
+  // Robot i and those in the way of its ideal path, replanned in turn around the rest: i
+  // first, then the others by how much they stand in its way; kept when their sum of costs
+  // drops and none of them ends after the makespan.
   int groupPass() {
     int improved = 0;
     for (int i : delayOrder()) {
       if (outOfBudget()) break;
       // The group's robots move too: only i's distance bounds its cost.
       if (distance_[i] < 0 || costOf(i) <= distance_[i]) continue;
-      if (group_failed_at_[i] == changes_) continue;  // the same group, the same search
+      if (group_failed_at_[i] == changes_) continue;  // the same group, the same searches
       if (ideal_[i].empty()) ideal_[i] = idealPath(instance_, graphs_, i, deadline_);
-      std::vector<int> group = blockers(graphs_, paths_, i, ideal_[i], options_.group_size - 1);
-      if (group.empty()) continue;
-      group.push_back(i);
-      std::sort(group.begin(), group.end());
-      if (replanGroup(group)) {
+      std::vector<int> order = blockers(graphs_, paths_, i, ideal_[i], options_.group_size - 1);
+      if (order.empty()) continue;
+      order.insert(order.begin(), i);
+      ++stats_.group_searches;
+      if (timed([&] { return replanInTurn(order); })) {
         ++improved;
       } else if (!deadline_.expired()) {
         group_failed_at_[i] = changes_;
@@ -183,41 +183,52 @@ class Refiner {
     return improved;
   }
 
-  bool replanGroup(const std::vector<int>& group) {
-    Subproblem sub;
-    sub.instance = &instance_;
-    sub.graphs = &graphs_;
-    sub.robots = group;
-    sub.deadline = deadline_;
+  // Prioritized planning of the group (`order`, first planned first): all of it out of the
+  // table, then each robot searched around the rest and the members planned before it (the
+  // later members do not exist for it). Each search only looks for arrivals that can still
+  // make the group cheaper (and by the makespan); on any failure the old paths go back.
+  bool replanInTurn(const std::vector<int>& order) {
+    const std::size_t n = order.size();
+    const int limit = makespan();
     long long before = 0;
-    for (int r : group) before += costOf(r);
-    for (int j = 0; j < n_; ++j) {
-      if (!std::binary_search(group.begin(), group.end(), j)) sub.moving.push_back({j, paths_[j]});
+    std::vector<StatePath> old(n);
+    for (std::size_t k = 0; k < n; ++k) {
+      before += costOf(order[k]);
+      old[k] = table_->path(order[k]);
+      table_->remove(order[k]);
     }
-    LaCbsOptions cbs_options;
-    cbs_options.max_high_level_nodes = options_.group_nodes;
-    cbs_options.pairwise_delay_nodes = 0;
-    cbs_options.max_low_level_nodes = options_.max_nodes_per_search;
-    // What is left of the refinement's budget (groupPass starts a group only while some is).
-    cbs_options.max_total_expansions = std::min(options_.group_expansions, max_expansions_ - stats_.expansions);
-    ++stats_.group_searches;
-    const SolveResult solved = timed([&] { return LaCbs(cbs_options).solve(sub); });
-    stats_.expansions += solved.stats.low_level_expansions;
-    if (!solved.success()) return false;
+    std::vector<Path> fresh(n);
     long long after = 0;
-    int longest = 0;
-    for (std::size_t k = 0; k < group.size(); ++k) {
-      const int c = pathCost(solved.paths[k], instance_.robots[group[k]].target);
-      after += c;
-      longest = std::max(longest, c);
+    bool planned = true;
+    for (std::size_t k = 0; k < n && planned; ++k) {
+      const int r = order[k];
+      long long later = 0;  // the least the members after r can cost
+      for (std::size_t m = k + 1; m < n; ++m) later += std::max(0, distance_[order[m]]);
+      const long long cap = std::min<long long>(limit, before - 1 - after - later);
+      planned = cap >= 0 && !outOfBudget() && space_->buildDistances(r, deadline_);
+      if (!planned) break;
+      distance_[r] = space_->distance(r, space_->start(r));
+      const SafeIntervalResult found = safeIntervalSearch(*space_, r, *table_, deadline_, options_.max_nodes_per_search,
+                                                          static_cast<int>(cap));
+      space_->dropDistances(r);
+      stats_.expansions += found.expansions;
+      planned = found.outcome == SafeIntervalResult::Outcome::Found;
+      if (!planned) break;
+      table_->insert(r, found.path);
+      for (StateId st : found.path) fresh[k].push_back(space_->graph(r).pose(st));
+      after += pathCost(fresh[k], instance_.robots[r].target);
     }
-    if (after >= before || longest > makespan()) return false;  // SOC drops, makespan does not grow
-    for (std::size_t k = 0; k < group.size(); ++k) paths_[group[k]] = solved.paths[k];
-    stats_.soc_saved += before - after;
-    for (int r : group) {
-      if (!track(r)) break;
+    if (planned && after < before) {
+      for (std::size_t k = 0; k < n; ++k) paths_[order[k]] = std::move(fresh[k]);
+      stats_.soc_saved += before - after;
+      changes_ += static_cast<long long>(n);
+      return true;
     }
-    return true;
+    for (std::size_t k = 0; k < n; ++k) {
+      if (table_->contains(order[k])) table_->remove(order[k]);
+      table_->insert(order[k], old[k]);
+    }
+    return false;
   }
 
   // Robot i's path (paths_[i]) put in the table in place of its old one; false (and the

@@ -13,10 +13,11 @@
 ///
 /// A single robot often cannot improve because others stand in the way of its cheaper paths:
 /// when a pass of single searches improves nothing, each delayed robot is replanned together
-/// with the (up to group_size - 1) robots whose paths cover most of its ideal path, by LA-CBS
-/// around the rest, under a node budget; the group's new paths are kept when their sum of
-/// costs drops and none of them ends after the plan's makespan. So neither the SOC nor the
-/// makespan ever grows.
+/// with the (up to group_size - 1) robots whose paths cover most of its ideal path: in turn
+/// (prioritized planning, the delayed robot first, each member around the rest and the members
+/// before it), the way MAPF-LNS repairs a neighbourhood; the group's new paths are kept when
+/// their sum of costs drops and none of them ends after the plan's makespan. So neither the SOC
+/// nor the makespan ever grows. A search that failed is not repeated until some path changes.
 ///
 /// Robots are visited in decreasing order of their delay (ties: index), and passes repeat
 /// until one improves nothing, or a limit (passes, expansions) or the deadline is reached. Without the
@@ -32,19 +33,16 @@ namespace fleet_planner {
 
 struct RefinementOptions {
   int max_passes = 4;
-  /// Low-level expansions of all searches together (safe-interval expansions of the single
-  /// searches, LA-CBS's of the group searches), per robot of the plan (checked between single
-  /// searches; a group search gets what is left, checked by LA-CBS between its nodes): bounds
-  /// the refinement's work the same way on every machine.
+  /// Safe-interval expansions of all searches together, per robot of the plan (checked before
+  /// each search, a group's member searches included): bounds the refinement's work the same
+  /// way on every machine.
   long long expansions_per_robot = 30'000;
   long long max_expansions = 300'000;  ///< and at most this many in all
-  long long max_nodes_per_search = 50'000;  ///< expansions of a single search; LA-CBS: its low-level nodes
+  long long max_nodes_per_search = 50'000;  ///< expansions of one search (a group: of each member's)
   /// A single search orders its nodes by arrival + weight x distance to the target: the first
   /// path it finds arrives before the robot's current arrival, not necessarily at the earliest.
   double heuristic_weight = 2.0;
-  int group_size = 4;                         ///< robots per group search; < 2: none
-  long long group_nodes = 64;                 ///< LA-CBS constraint-tree expansions per group
-  long long group_expansions = 400'000;       ///< LA-CBS low-level expansions per group (at most what is left)
+  int group_size = 4;  ///< robots per group search; < 2: none
 };
 
 struct RefinementStats {
