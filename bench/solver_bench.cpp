@@ -1,4 +1,5 @@
-// Backend kernels: LA-LaCAM's configuration rate on packed fleets, and LA-LNS's first plan.
+// Backend kernels: LA-LaCAM's configuration rate on packed fleets, LA-LNS's first plan, and the
+// joint search of a knot.
 // Each run plans the pool's "K mixed" robots as one subproblem (raw), on one thread, for a fixed
 // budget of low-level expansions, so that every machine does the same work. The time reported
 // is the search's: the same solve with a budget of one step (distance tables and the first
@@ -12,6 +13,8 @@
 #include "bench_problems.h"
 #include "fleet_planner/solvers/lns/parking_plan.h"
 #include "fleet_planner/solvers/registry.h"
+#include "fleet_planner/solvers/search/joint_path_search.h"
+#include "fleet_planner/solvers/search/soft_path_table.h"
 #include "fleet_planner/solvers/search/search_space.h"
 #include "fleet_planner/solvers/solver.h"
 
@@ -94,11 +97,30 @@ void BM_ParkingPlan(benchmark::State& state, const char* map) {
   state.counters["home"] = home;
 }
 
+/// The joint search (joint_path_search.h) of robots 6 and 9 of AR0203SR's pool of 10, the pair
+/// that must wait for each other in a diagonal corridor, alone, for 200,000 joint states (it
+/// needs more): `expansions/s`. The set-up (distance tables) is not timed.
+void BM_JointSearch(benchmark::State& state) {
+  std::string error;
+  Problem* p = problem("AR0203SR", 10, error);
+  if (p == nullptr) return state.SkipWithError(error.c_str());
+  const Subproblem sub = wholeFleet(*p, -1);
+  const SearchSpace space(sub);
+  const SoftPathTable nobody(space);
+  JointSearchOptions o;
+  o.max_nodes = 200'000;
+  long long expansions = 0;
+  for (auto _ : state) expansions += jointPathSearch(space, {6, 9}, nobody, sub.deadline, o).expansions;
+  state.counters["expansions/s"] =
+      benchmark::Counter(static_cast<double>(expansions), benchmark::Counter::kIsRate);
+}
+
 BENCHMARK_CAPTURE(BM_ParkingPlan, Paris_1_256, "Paris_1_256")->Arg(300)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_LaLacamConfigurations, maze-128-128-10, "maze-128-128-10")->Arg(50)->UseManualTime()->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_LaLacamConfigurations, Paris_1_256, "Paris_1_256")->Arg(140)->UseManualTime()->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_LaLacamConfigurations, AR0044SR, "AR0044SR")->Arg(100)->UseManualTime()->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_LaLacamConfigurationsGenerated, Paris_1_256, "Paris_1_256")->Arg(300)->UseManualTime()->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_JointSearch)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace fleet_planner::bench

@@ -4,9 +4,9 @@
 #include <array>
 #include <cstdint>
 #include <queue>
-#include <unordered_map>
 
 #include "fleet_planner/runtime/errors.h"
+#include "joint_node_table.h"
 #include "soft_order.h"
 
 namespace fleet_planner {
@@ -26,22 +26,14 @@ struct Node {
   int parent;
 };
 
-struct Key {
-  Joint s;
-  int t;
-  unsigned done;
-  friend bool operator==(const Key& a, const Key& b) {
-    return a.s == b.s && a.t == b.t && a.done == b.done;
-  }
-};
+// A node's key: its members' states, its (collapsed) time and the members done.
+bool sameKey(const Node& a, const Node& b) { return a.s == b.s && a.t == b.t && a.done == b.done; }
 
-struct KeyHash {
-  std::size_t operator()(const Key& k) const {
-    std::uint64_t h = (static_cast<std::uint64_t>(k.t) << kMaxJointGroup) + k.done;
-    for (StateId s : k.s) h = (h ^ static_cast<std::uint32_t>(s)) * 0x9e3779b97f4a7c15ULL;
-    return static_cast<std::size_t>(h ^ (h >> 29));
-  }
-};
+std::uint64_t keyHash(const Node& k) {
+  std::uint64_t h = (static_cast<std::uint64_t>(k.t) << kMaxJointGroup) + k.done;
+  for (StateId s : k.s) h = (h ^ static_cast<std::uint32_t>(s)) * 0x9e3779b97f4a7c15ULL;
+  return h ^ (h >> 29);
+}
 
 // One member's move during a step: the action, where it leads, and what it sweeps.
 struct Move {
@@ -87,7 +79,8 @@ JointSearchResult jointPathSearch(const SearchSpace& space, const std::vector<in
 
   const unsigned all = (1u << n) - 1;
   std::vector<Node> nodes;
-  std::unordered_map<Key, int, KeyHash> seen;
+  std::vector<char> superseded;  // per node: a cheaper node with its key came later
+  JointNodeTable seen;
   std::priority_queue<int, std::vector<int>, SoftOrder<Node>> open(SoftOrder<Node>{&nodes});
   auto heuristic = [&](const Joint& s, unsigned done) {
     int h = 0;
@@ -96,11 +89,15 @@ JointSearchResult jointPathSearch(const SearchSpace& space, const std::vector<in
   };
   auto push = [&](Node node) {
     node.f = node.g + heuristic(node.s, node.done);
-    const Key k{node.s, node.t, node.done};
-    const auto it = seen.find(k);
-    if (it != seen.end() && nodes[it->second].g <= node.g) return;
-    seen[k] = static_cast<int>(nodes.size());
+    bool added = false;
+    int& entry = seen.entry(keyHash(node), [&](int j) { return sameKey(nodes[j], node); }, added);
+    if (!added) {
+      if (nodes[entry].g <= node.g) return;
+      superseded[entry] = 1;
+    }
+    entry = static_cast<int>(nodes.size());
     nodes.push_back(node);
+    superseded.push_back(0);
     open.push(static_cast<int>(nodes.size()) - 1);
   };
   push({start, std::min(t0, static_from), t0, 0, 0, 0, 0u, -1});
@@ -120,7 +117,7 @@ JointSearchResult jointPathSearch(const SearchSpace& space, const std::vector<in
     const int index = open.top();
     open.pop();
     const Node node = nodes[index];
-    if (seen.find(Key{node.s, node.t, node.done})->second != index) continue;  // superseded
+    if (superseded[index]) continue;
     ++result.expansions;
     if (node.done == all) {
       std::vector<int> chain;
