@@ -429,5 +429,35 @@ TEST(LaLns, GivesUpWhenStuckOnlyIfTheCallerMayTrySomethingElse) {
   EXPECT_LT(given_up_after[3], given_up_after[6]) << "fewer stalled repairs, sooner";
 }
 
+// The same stuck swap with a joint search of 400 states, too few to decide it: every repair of
+// the two is a joint repair, and with no path kept in between, each would run the same joint
+// search again. It runs once: the expansions it adds are the same whether LA-LNS gives up
+// after 3 or after 6 stalled repairs.
+TEST(LaLns, DoesNotRepeatAJointSearchOnTheSamePaths) {
+  const int n = 16;
+  const World w(freeMap(n, 1), {dot("a", {0, 0, 0}, {n - 3, 0, 0}), dot("b", {n - 3, 0, 2}, {0, 0, 2})});
+  std::map<int, long long> added;  // expansions of the joint searches, by knot_stall_repairs
+  for (const int knot_stall : {3, 6}) {
+    std::map<long long, long long> expansions;  // by joint_search_nodes
+    for (const long long nodes : {0, 400}) {
+      LaLnsOptions options;
+      options.joint_search_nodes = nodes;
+      options.pair_proof_expansions = 0;
+      options.knot_stall_repairs = knot_stall;
+      LaLns solver(options);
+      Subproblem sub = allRobots(w, 60.0);
+      sub.max_expansions = 5'000'000;
+      sub.may_give_up = [] { return true; };
+      const Outcome o = solveWith(solver, w, sub);
+      ASSERT_EQ(o.result.status, SolveStatus::Timeout) << describe(o);
+      ASSERT_NE(o.result.reason.find("stuck after"), std::string::npos) << o.result.reason;
+      expansions[nodes] = o.result.stats.low_level_expansions;
+    }
+    added[knot_stall] = expansions[400] - expansions[0];
+  }
+  EXPECT_GT(added[3], 0);
+  EXPECT_EQ(added[3], added[6]);
+}
+
 }  // namespace
 }  // namespace fleet_planner::test

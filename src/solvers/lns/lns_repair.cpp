@@ -58,11 +58,19 @@ bool LnsSearch::planTogether(const std::vector<int>& group) {
   if (!paths.empty()) return true;
   if (planAlone(group, seconds)) return true;
   if (static_cast<int>(group.size()) > kMaxJointGroup) return false;
+  std::vector<int> key = group;
+  std::sort(key.begin(), key.end());
   if (size_ < n_) {
-    std::vector<int> key = group;
-    std::sort(key.begin(), key.end());
     const int pairs = collidingPairs();
     if (pairs > options_.joint_search_pairs || !joint_tried_.insert({key, pairs}).second) return false;
+  }
+  // The joint searches below depend only on the group and the paths in the table: searched
+  // again with no path kept since, they would spend their states again for nothing (a small
+  // subproblem's repairs are all joint repairs, mostly of the same few groups).
+  const auto [last, first_time] = joint_searched_at_.try_emplace(key, kept_);
+  if (!first_time) {
+    if (last->second == kept_) return false;
+    last->second = kept_;
   }
   JointSearchOptions o;
   o.collision_cost = options_.collision_cost;

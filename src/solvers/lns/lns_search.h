@@ -184,6 +184,8 @@ class LnsSearch {
   // by planTogether: (sorted group, colliding pairs) searched jointly before the neighbourhood
   // held the whole subproblem, each once
   std::set<std::pair<std::vector<int>, int>> joint_tried_;
+  // by planTogether: per sorted group, kept_ when it was last searched jointly
+  std::map<std::vector<int>, long long> joint_searched_at_;
   NeighborhoodGrowth growth_;
   int size_ = 0;                    // agents in this repair's neighbourhood (growth_)
   std::array<double, kMethods> weights_;
