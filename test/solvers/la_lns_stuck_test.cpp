@@ -1,0 +1,82 @@
+// LA-LNS stuck on a swap that it can neither plan nor prove impossible: when it gives up, and
+// what it does not search again meanwhile.
+#include <gtest/gtest.h>
+
+#include <map>
+#include <string>
+
+#include "fleet_planner/solvers/lns/la_lns.h"
+#include "solver_test_util.h"
+#include "test_maps.h"
+
+namespace fleet_planner::test {
+namespace {
+
+// Two robots swapping ends of a one-row corridor, with both proofs out of reach (no joint
+// states, no pair expansions): LA-LNS is stuck. When the caller has something else to try, it
+// says so after a few repairs of every robot (for two robots, each the whole joint repair: knot_stall_repairs of them), long
+// before its budget; otherwise it spends the budget.
+TEST(LaLns, GivesUpWhenStuckOnlyIfTheCallerMayTrySomethingElse) {
+  const int n = 16;
+  const World w(freeMap(n, 1), {dot("a", {0, 0, 0}, {n - 3, 0, 0}), dot("b", {n - 3, 0, 2}, {0, 0, 2})});
+  std::map<int, long long> given_up_after;  // expansions, by knot_stall_repairs
+  for (const int knot_stall : {3, 6})
+    for (const bool may_give_up : {true, false}) {
+      SCOPED_TRACE(std::to_string(knot_stall) + (may_give_up ? " may give up" : ""));
+      LaLnsOptions options;
+      options.joint_search_nodes = 0;
+      options.pair_proof_expansions = 0;
+      options.knot_stall_repairs = knot_stall;
+      LaLns solver(options);
+      Subproblem sub = allRobots(w, 60.0);
+      sub.max_expansions = 5'000'000;
+      if (may_give_up) sub.may_give_up = [] { return true; };
+      const Outcome o = solveWith(solver, w, sub);
+      EXPECT_EQ(o.result.status, SolveStatus::Timeout) << describe(o);
+      const std::string after =
+          "stuck after " + std::to_string(knot_stall) + " repairs of every robot";
+      const bool stuck = o.result.reason.find(after) != std::string::npos;
+      EXPECT_EQ(stuck, may_give_up) << o.result.reason;
+      EXPECT_EQ(o.result.reason.find("expansion budget") != std::string::npos, !may_give_up)
+          << o.result.reason;
+      if (may_give_up) {
+        EXPECT_LT(o.result.stats.low_level_expansions, sub.max_expansions / 3) << describe(o);
+        EXPECT_EQ(o.result.culprits, (std::vector<int>{0, 1}));
+        given_up_after[knot_stall] = o.result.stats.low_level_expansions;
+      }
+    }
+  EXPECT_LT(given_up_after[3], given_up_after[6]) << "fewer stalled repairs, sooner";
+}
+
+// That stuck swap with a joint search of 400 states, too few to decide it: every repair of
+// the two is a joint repair, and with no path kept in between, each would run the same joint
+// search again. It runs once: the expansions it adds are the same whether LA-LNS gives up
+// after 3 or after 6 stalled repairs.
+TEST(LaLns, DoesNotRepeatAJointSearchOnTheSamePaths) {
+  const int n = 16;
+  const World w(freeMap(n, 1), {dot("a", {0, 0, 0}, {n - 3, 0, 0}), dot("b", {n - 3, 0, 2}, {0, 0, 2})});
+  std::map<int, long long> added;  // expansions of the joint searches, by knot_stall_repairs
+  for (const int knot_stall : {3, 6}) {
+    std::map<long long, long long> expansions;  // by joint_search_nodes
+    for (const long long nodes : {0, 400}) {
+      LaLnsOptions options;
+      options.joint_search_nodes = nodes;
+      options.pair_proof_expansions = 0;
+      options.knot_stall_repairs = knot_stall;
+      LaLns solver(options);
+      Subproblem sub = allRobots(w, 60.0);
+      sub.max_expansions = 5'000'000;
+      sub.may_give_up = [] { return true; };
+      const Outcome o = solveWith(solver, w, sub);
+      ASSERT_EQ(o.result.status, SolveStatus::Timeout) << describe(o);
+      ASSERT_NE(o.result.reason.find("stuck after"), std::string::npos) << o.result.reason;
+      expansions[nodes] = o.result.stats.low_level_expansions;
+    }
+    added[knot_stall] = expansions[400] - expansions[0];
+  }
+  EXPECT_GT(added[3], 0);
+  EXPECT_EQ(added[3], added[6]);
+}
+
+}  // namespace
+}  // namespace fleet_planner::test
