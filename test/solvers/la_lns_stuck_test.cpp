@@ -14,8 +14,8 @@ namespace {
 
 // Two robots swapping ends of a one-row corridor, with both proofs out of reach (no joint
 // states, no pair expansions): LA-LNS is stuck. When the caller has something else to try, it
-// says so after a few repairs of every robot (for two robots, each the whole joint repair: knot_stall_repairs of them), long
-// before its budget; otherwise it spends the budget.
+// says so after a few repairs of every robot (for two robots, each the whole joint repair:
+// knot_stall_repairs of them), long before its budget; otherwise it spends the budget.
 TEST(LaLns, GivesUpWhenStuckOnlyIfTheCallerMayTrySomethingElse) {
   const int n = 16;
   const World w(freeMap(n, 1), {dot("a", {0, 0, 0}, {n - 3, 0, 0}), dot("b", {n - 3, 0, 2}, {0, 0, 2})});

@@ -50,8 +50,9 @@ struct LaLnsOptions {
   int stall_repairs = 10;
   /// The same for a subproblem of at most `joint_robots` robots: each of its repairs is already
   /// the joint repair of all of it, every method of it (the same searches again, in another
-  /// order), so it is stuck sooner. Counts only for giving up (Subproblem::may_give_up).
-  int knot_stall_repairs = 3;
+  /// order, a group's joint searches not repeated while no path is kept), so it is stuck
+  /// sooner. Counts only for giving up (Subproblem::may_give_up).
+  int knot_stall_repairs = 2;
   /// Cost of one colliding step in the low level, in steps of path length.
   int collision_cost = 16;
   /// Expansions of one low-level search before it gives up.
