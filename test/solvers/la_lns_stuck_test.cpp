@@ -78,5 +78,31 @@ TEST(LaLns, DoesNotRepeatAJointSearchOnTheSamePaths) {
   EXPECT_EQ(added[3], added[6]);
 }
 
+// The swap along a longer corridor that the pair proof decides when nobody else can help
+// (LaLns.ProvesAnImpossibleSwapInALongCorridorByThePairAlone). When the caller may give up,
+// robots of other subproblems stand among the static obstacles and could step aside: no pair
+// proof is run, and LA-LNS gives up when stuck, as it would after a proof.
+TEST(LaLns, LeavesPairProofsToTheCallerThatMayGiveUp) {
+  const int n = 16;
+  const World w(mapFromRows({std::string(n, '.'), std::string(n - 1, '@') + "."}),
+                {dot("a", {0, 0, 0}, {n - 3, 0, 0}), dot("b", {n - 3, 0, 2}, {0, 0, 2}),
+                 dot("c", {n - 1, 1, 1}, {n - 1, 1, 1})});
+  for (const bool may_give_up : {false, true}) {
+    SCOPED_TRACE(may_give_up ? "may give up" : "alone");
+    LaLnsOptions options;
+    options.joint_search_nodes = 500;
+    LaLns solver(options);
+    Subproblem sub = allRobots(w, 20.0);
+    if (may_give_up) sub.may_give_up = [] { return true; };
+    const Outcome o = solveWith(solver, w, sub);
+    if (may_give_up) {
+      EXPECT_EQ(o.result.status, SolveStatus::Timeout) << describe(o);
+      EXPECT_NE(o.result.reason.find("stuck after"), std::string::npos) << o.result.reason;
+    } else {
+      EXPECT_EQ(o.result.status, SolveStatus::Infeasible) << describe(o);
+    }
+  }
+}
+
 }  // namespace
 }  // namespace fleet_planner::test

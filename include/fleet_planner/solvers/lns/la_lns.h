@@ -76,7 +76,8 @@ struct LaLnsOptions {
   long long joint_max_expansions = 100'000;
   /// Where the joint search finds nothing, each pair of the group is tried alone among the
   /// static obstacles by LA-LaCAM, with this many expansions: a pair that cannot reach its
-  /// targets proves that the subproblem has no plan.
+  /// targets proves that the subproblem has no plan. Not when the caller may give up
+  /// (Subproblem::may_give_up): it has something else to try either way.
   long long pair_proof_expansions = 2'000'000;
   /// Joint repair, after LA-CBS: the group alone among the static obstacles by LA-LaCAM, with
   /// at most this many expansions (0: never) in the time LA-CBS had, when the subproblem has no
