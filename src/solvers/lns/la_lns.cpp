@@ -128,6 +128,9 @@ SolveResult LnsSearch::race() {
   other_problem.seed = problem_->seed ^ 0x9e3779b97f4a7c15ULL;
   other_problem.deadline =
       Deadline(problem_->deadline.end(), &race.call_off).withMemoryGuard(problem_->deadline.memoryGuard());
+  // The caller is asked on this thread only (Subproblem::may_give_up is not made for two): the
+  // answer, which pair proofs also read, is kept before the copy is made.
+  mayGiveUp();
   LnsSearch other(*this);
   other.stats_ = &other_stats;
   other.rng_ = Rng(other_problem.seed);
