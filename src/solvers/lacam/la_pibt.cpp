@@ -24,6 +24,10 @@ LaPibt::LaPibt(const SearchSpace& space, std::uint64_t seed, bool remember_escap
     : space_(space),
       rng_(seed),
       seen_agent_(space.numAgents(), 0),
+      escapes_(remember_escapes ? kEscapeSlots : 0),
+      candidates_at_(space.numAgents(), kNoState),
+      candidates_(space.numAgents()),
+      candidate_distances_(space.numAgents()),
       assigned_(space.numAgents()),
       remember_escapes_(remember_escapes) {
   if (space.numAgents() == 0) return;
@@ -93,6 +97,15 @@ StateChoices LaPibt::candidates(int a, StateId s) const {
     if (space_.distance(a, next) >= 0 && space_.allows(a, s, action)) out.push(next, action);
   });
   return out;
+}
+
+const StateChoices& LaPibt::candidatesOf(int a, StateId s) {
+  if (candidates_at_[a] != s) {
+    candidates_[a] = candidates(a, s);
+    candidates_at_[a] = s;
+    for (int i = 0; i < candidates_[a].size(); ++i) candidate_distances_[a][i] = space_.distance(a, candidates_[a][i]);
+  }
+  return candidates_[a];
 }
 
 bool LaPibt::fits(int a, StateId from, Action action, std::vector<int>* in_way) const {
@@ -179,15 +192,19 @@ StateChoices LaPibt::escapeSteps(int a, StateId from, const CellSet& sweep, Cell
 StateChoices LaPibt::cachedEscape(int a, StateId from, int pusher, StateId pusher_from, Action action) {
   // The escape depends on nothing but a's graph, the map and the pusher's sweep: the same
   // situations recur across configurations, so the answers are kept (up to a bound).
-  const EscapeKey key{(static_cast<std::uint64_t>(a) << 32) | static_cast<std::uint32_t>(from),
-                      (static_cast<std::uint64_t>(pusher) << 35) | (static_cast<std::uint64_t>(action) << 32) |
-                          static_cast<std::uint32_t>(pusher_from)};
-  const auto it = escapes_.find(key);
-  if (it != escapes_.end()) return it->second;
-  if (escapes_.size() >= kEscapeCache) escapes_.clear();
+  const std::uint64_t agent_state = (static_cast<std::uint64_t>(a) << 32) | static_cast<std::uint32_t>(from);
+  const std::uint64_t pusher_motion = (static_cast<std::uint64_t>(pusher) << 35) |
+                                      (static_cast<std::uint64_t>(action) << 32) |
+                                      static_cast<std::uint32_t>(pusher_from);
+  Escape* slot = nullptr;
+  if (remember_escapes_) {
+    slot = &escapes_[((agent_state * 0x9e3779b97f4a7c15ULL) ^ pusher_motion) * 0xff51afd7ed558ccdULL >> 48 &
+                     (kEscapeSlots - 1)];
+    if (slot->agent_state == agent_state && slot->pusher_motion == pusher_motion) return slot->steps;
+  }
   const GridPose p = space_.graph(pusher).pose(pusher_from);
   const StateChoices steps = escapeSteps(a, from, space_.cells(pusher).swept(p.heading, action), {p.x, p.y});
-  if (remember_escapes_) escapes_.emplace(key, steps);
+  if (slot != nullptr) *slot = {agent_state, pusher_motion, steps};
   return steps;
 }
 
@@ -202,14 +219,14 @@ bool LaPibt::assign(int a, const Config& current, Config& next, int pusher, Stat
     options = cachedEscape(a, current[a], pusher, current[pusher], action);
   } else {
     // Best first by distance to the target; random tie-break from the seed.
-    const StateChoices all = candidates(a, current[a]);
+    const StateChoices& all = candidatesOf(a, current[a]);
     struct Ranked {
       int distance;
       std::uint64_t tie;
       int index;
     };
     std::array<Ranked, kActions> ranked;
-    for (int i = 0; i < all.size(); ++i) ranked[i] = {space_.distance(a, all[i]), rng_.next(), i};
+    for (int i = 0; i < all.size(); ++i) ranked[i] = {candidate_distances_[a][i], rng_.next(), i};
     sortFew(ranked, all.size(), [](const Ranked& x, const Ranked& y) {
       return x.distance != y.distance ? x.distance < y.distance : x.tie < y.tie;
     });

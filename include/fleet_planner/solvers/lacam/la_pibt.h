@@ -14,7 +14,6 @@
 #include <array>
 #include <cstdint>
 #include <memory>
-#include <unordered_map>
 #include <vector>
 
 #include "fleet_planner/runtime/random.h"
@@ -55,6 +54,10 @@ class LaPibt {
 
   /// Next states of agent a from s: wait first, then every allowed action's result.
   StateChoices candidates(int a, StateId s) const;
+  /// candidates(a, s), remembered per agent for its last state: most agents of a packed fleet
+  /// stand still from one configuration to the next, and the graph's and distance table's
+  /// reads behind an answer are cache misses.
+  const StateChoices& candidatesOf(int a, StateId s);
 
   /// Fills `next` from `current`: agents in `fixed` (agent, next state) first, in that order,
   /// then the others in `order`. Returns false if the fixed moves cannot all be made.
@@ -114,18 +117,21 @@ class LaPibt {
     int depth;
   };
   mutable std::vector<EscapeItem> escape_queue_;
-  struct EscapeKey {
-    std::uint64_t agent_state, pusher_motion;
-    bool operator==(const EscapeKey& o) const { return agent_state == o.agent_state && pusher_motion == o.pusher_motion; }
+  // Remembered escapes, direct-mapped: a key's one slot holds the last answer that hashed
+  // there (a miss recomputes and replaces it), so memory stays fixed and nothing is cleared.
+  struct Escape {
+    std::uint64_t agent_state = ~std::uint64_t{0};  // (agent << 32) | state; all ones: empty
+    std::uint64_t pusher_motion = 0;                // (pusher << 35) | (action << 32) | state
+    StateChoices steps;
   };
-  struct EscapeHash {
-    std::size_t operator()(const EscapeKey& k) const { return k.agent_state * 0x9e3779b97f4a7c15ULL ^ k.pusher_motion; }
-  };
-  static constexpr std::size_t kEscapeCache = 1 << 16;  // entries kept before starting afresh
-  std::unordered_map<EscapeKey, StateChoices, EscapeHash> escapes_;
+  static constexpr std::size_t kEscapeSlots = 1 << 16;
+  std::vector<Escape> escapes_;
 
   mutable std::vector<std::uint32_t> seen_;
   mutable std::uint32_t seen_query_ = 0;
+  std::vector<StateId> candidates_at_;       // per agent: the state of candidates_[a]
+  std::vector<StateChoices> candidates_;     // per agent: candidates() at candidates_at_[a]
+  std::vector<std::array<int, kActions>> candidate_distances_;  // and their distances to target
   std::vector<bool> assigned_;  // assigned, or being assigned (then counted as waiting)
   std::vector<int> in_way_;     // assign()'s agents in the way, a stack shared by nested pushes
   bool remember_escapes_;
