@@ -68,6 +68,7 @@ SubproblemSolvingOptions solvingOptions(const LayeredOptions& options, const Dec
   s.budget = options.budget;
   s.entangled_pairs = decomposition.entangled_pairs;
   s.entangled_known = options.decompose && decomposition.pairs_complete;
+  s.whole_fleet_ends_when_stalled = options.whole_fleet_ends_when_stalled;
   return s;
 }
 

@@ -36,8 +36,12 @@ void Solving::solveOne(std::size_t k) {
   sub.graphs = &graphs_;
   sub.robots = order_[k].robots;
   sub.seed = options_.seed + order_[k].seed_offset;
-  // Alone (the whole fleet as one subproblem), it has every thread to itself.
-  if (order_.size() == 1) sub.threads = std::max(1, options_.threads);
+  // Alone (the whole fleet as one subproblem), it has every thread to itself, and it may end
+  // when it stalls if the caller has another way to plan the fleet.
+  if (order_.size() == 1) {
+    sub.threads = std::max(1, options_.threads);
+    sub.ends_when_stalled = options_.whole_fleet_ends_when_stalled;
+  }
   const std::vector<int>& aside = order_[k].stepping_aside;
   sub.robots.insert(sub.robots.end(), aside.begin(), aside.end());
   for (std::size_t m = 0; m < order_.size(); ++m) {

@@ -49,11 +49,13 @@ std::string precheckReason(const SolvabilityReport& report) {
 /// lattice (the reason is in result.lattice_notes); true when `result` is the answer.
 class LatticeAttempt {
  public:
+  /// second_chance_step: the step on which a stalled whole fleet ends early, since a coarser
+  /// lattice follows it (0: none).
   LatticeAttempt(const GridMap& map, const Instance& instance, const PlanningOptions& options,
                  const PlanningCall& call, const Deadline& deadline, const MemoryGuard& memory,
-                 PlanningResult& result)
+                 PlanningResult& result, int second_chance_step = 0)
       : map_(map), instance_(instance), options_(options), call_(call), deadline_(deadline), memory_(memory),
-        result_(result) {}
+        result_(result), second_chance_step_(second_chance_step) {}
 
   bool run(int step) {
     ActionModel model = options_.model;
@@ -130,8 +132,9 @@ class LatticeAttempt {
     std::vector<std::string> notes = std::move(result_.lattice_notes);
     const double precompute_s = result_.precompute_s;
     const bool cached = result_.graphs_cached;
-    static_cast<LayeredResult&>(result_) =
-        planLayered(map_, planned, graphs, layeredOptions(options_, result_.threads), deadline_);
+    LayeredOptions layered = layeredOptions(options_, result_.threads);
+    layered.whole_fleet_ends_when_stalled = step == second_chance_step_;
+    static_cast<LayeredResult&>(result_) = planLayered(map_, planned, graphs, layered, deadline_);
     result_.lattice_notes = std::move(notes);
     result_.precompute_s = precompute_s;
     result_.graphs_cached = cached;
@@ -199,6 +202,7 @@ class LatticeAttempt {
   const Deadline& deadline_;
   const MemoryGuard& memory_;
   PlanningResult& result_;
+  const int second_chance_step_;
   std::shared_ptr<const FleetGraphs> graphs_;
 };
 
@@ -223,7 +227,8 @@ PlanningResult planFleet(const GridMap& map, const Instance& instance, const Pla
   // On the default lattice of a step above 1, a share of the time; a fleet that times out there
   // is planned again on a lattice twice as coarse in the rest: other rows and columns and fewer
   // states, where a knot of a few large robots in an aisle that the finer lattice's searches
-  // did not untie may come apart. Its answer is kept if it is a plan (or an internal error);
+  // did not untie may come apart. A fleet solved as one subproblem ends there as soon as its
+  // search stalls, so that the coarser lattice gets the time. Its answer is kept if it is a plan (or an internal error);
   // otherwise the first answer stands, with a note.
   const int first = initialLatticeStep(options, instance);
   const bool second_chance =
@@ -231,7 +236,7 @@ PlanningResult planFleet(const GridMap& map, const Instance& instance, const Pla
   const Deadline first_deadline =
       second_chance ? deadline.within(deadline.remaining() * options.budget.default_lattice_share)
                     : deadline;
-  LatticeAttempt attempt(map, instance, options, call, first_deadline, memory, result);
+  LatticeAttempt attempt(map, instance, options, call, first_deadline, memory, result, second_chance ? first : 0);
   int step = first;
   while (!attempt.run(step) && step > 1) step = std::max(1, step / 2);
   std::shared_ptr<const FleetGraphs> graphs = attempt.graphs();

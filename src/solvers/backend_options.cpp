@@ -43,6 +43,7 @@ void LaLns::configure(const BackendOptionValues& values) {
   bind.integer("neighborhood_size", o.neighborhood_size, 1, 100000);
   bind.integer("stall_repairs", o.stall_repairs, 1, 1000000);
   bind.integer("knot_stall_repairs", o.knot_stall_repairs, 1, 1000000);
+  bind.integer("end_stall_repairs", o.end_stall_repairs, 1, 1000000);
   bind.integer("collision_cost", o.collision_cost, 1, 1000000);
   bind.integer("max_expansions_per_search", o.max_expansions_per_search, 1, kMaxCount);
   bind.number("heuristic_weight", o.heuristic_weight, 1, 100);

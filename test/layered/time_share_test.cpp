@@ -1,4 +1,5 @@
-// The time share each subproblem gets from the layered planner (subproblem_solving.h).
+// The time share each subproblem gets from the layered planner (subproblem_solving.h), and
+// whether it may end when it stalls.
 #include <gtest/gtest.h>
 
 #include <map>
@@ -17,10 +18,11 @@ namespace {
 using test::dot;
 using test::footprintsOf;
 
-// A test-only parallel backend: LA-LaCAM, recording the seconds each subproblem was given (by
-// its first robot).
+// A test-only parallel backend: LA-LaCAM, recording the seconds each subproblem was given and
+// whether it may end when stalled (by its first robot).
 std::mutex given_mutex;
 std::map<int, double> given;
+std::map<int, bool> ends_when_stalled;
 
 class Recording : public Solver {
  public:
@@ -30,6 +32,7 @@ class Recording : public Solver {
     {
       const std::lock_guard<std::mutex> lock(given_mutex);
       given[p.robots.front()] = p.deadline.remaining();
+      ends_when_stalled[p.robots.front()] = p.ends_when_stalled;
     }
     return makeSolver("la_lacam")->solve(p);
   }
@@ -71,6 +74,36 @@ TEST(TimeShare, ALateSubproblemSharesOnlyWithTheRobotsStillToSolve) {
   EXPECT_LT(given[0], (minimum + 0.05) * seconds) << "a one-robot subproblem among ten robots: the minimum";
   EXPECT_GT(given[6], 0.6 * seconds) << "three robots of the four left";
   EXPECT_GT(given[9], 0.9 * seconds) << "the last subproblem gets all that is left";
+}
+
+// The caller's other way to plan a stalled fleet (LayeredOptions::whole_fleet_ends_when_stalled:
+// the planner's coarser lattice) is told to the whole fleet solved as one subproblem, and to
+// nothing smaller: a subproblem of several has the safeguard (a step aside, a merge) after it.
+TEST(TimeShare, OnlyTheWholeFleetAsOneMayEndWhenItStalls) {
+  ASSERT_TRUE(kRecording);
+  const GridMap map = test::freeMap(12, 3);
+  Instance in;
+  for (int r = 0; r < 3; ++r) in.robots.push_back(dot("r" + std::to_string(r), {0, r, 0}, {11, r, 0}));
+  const FleetGraphs graphs(map, footprintsOf(in));
+  SolvedSubproblem whole;
+  whole.robots = {0, 1, 2};
+  std::vector<SolvedSubproblem> each(3);
+  for (int r = 0; r < 3; ++r) {
+    each[r].robots = {r};
+    each[r].cluster = r;
+    each[r].seed_offset = static_cast<std::uint64_t>(r);
+  }
+  for (const bool another_way : {true, false}) {
+    SubproblemSolvingOptions o;
+    o.backend = "share_recording_test_backend";
+    o.whole_fleet_ends_when_stalled = another_way;
+    ends_when_stalled.clear();
+    ASSERT_EQ(solveSubproblems(in, graphs, {whole}, o, Deadline::in(20.0)).status, SolveStatus::Success);
+    EXPECT_EQ(ends_when_stalled, (std::map<int, bool>{{0, another_way}}));
+    ends_when_stalled.clear();
+    ASSERT_EQ(solveSubproblems(in, graphs, each, o, Deadline::in(20.0)).status, SolveStatus::Success);
+    EXPECT_EQ(ends_when_stalled, (std::map<int, bool>{{0, false}, {1, false}, {2, false}}));
+  }
 }
 
 }  // namespace

@@ -104,5 +104,53 @@ TEST(LaLns, LeavesPairProofsToTheCallerThatMayGiveUp) {
   }
 }
 
+// The stuck swap again, as the whole fleet of a caller that has another way to plan it
+// (Subproblem::ends_when_stalled: the planner's coarser lattice): LA-LNS ends after
+// end_stall_repairs repairs in a row without fewer colliding pairs, sooner for fewer, long
+// before its budget; without the flag it spends the budget.
+TEST(LaLns, EndsAfterStalledRepairsWhenTheCallerHasAnotherWay) {
+  const int n = 16;
+  const World w(freeMap(n, 1), {dot("a", {0, 0, 0}, {n - 3, 0, 0}), dot("b", {n - 3, 0, 2}, {0, 0, 2})});
+  std::map<int, long long> ended_after;  // expansions, by end_stall_repairs
+  for (const int stalled : {4, 8})
+    for (const bool another_way : {true, false}) {
+      SCOPED_TRACE(std::to_string(stalled) + (another_way ? " another way" : ""));
+      LaLnsOptions options;
+      options.joint_search_nodes = 0;
+      options.pair_proof_expansions = 0;
+      options.end_stall_repairs = stalled;
+      LaLns solver(options);
+      Subproblem sub = allRobots(w, 60.0);
+      sub.max_expansions = 5'000'000;
+      sub.ends_when_stalled = another_way;
+      const Outcome o = solveWith(solver, w, sub);
+      ASSERT_EQ(o.result.status, SolveStatus::Timeout) << describe(o);
+      const std::string ended = "no fewer colliding pairs in " + std::to_string(stalled) + " repairs";
+      EXPECT_EQ(o.result.reason.find(ended) != std::string::npos, another_way) << o.result.reason;
+      if (another_way) {
+        EXPECT_LT(o.result.stats.low_level_expansions, sub.max_expansions / 3) << describe(o);
+        ended_after[stalled] = o.result.stats.low_level_expansions;
+      }
+    }
+  EXPECT_LT(ended_after[4], ended_after[8]) << "fewer stalled repairs, sooner";
+}
+
+// Unlike may_give_up, ending when stalled keeps the pair proofs: the corridor swap that the
+// pair proof decides is INFEASIBLE whether or not the caller has another way.
+TEST(LaLns, KeepsPairProofsWhenItEndsOnAStall) {
+  const int n = 16;
+  const World w(mapFromRows({std::string(n, '.'), std::string(n - 1, '@') + "."}),
+                {dot("a", {0, 0, 0}, {n - 3, 0, 0}), dot("b", {n - 3, 0, 2}, {0, 0, 2}),
+                 dot("c", {n - 1, 1, 1}, {n - 1, 1, 1})});
+  LaLnsOptions options;
+  options.joint_search_nodes = 500;
+  options.end_stall_repairs = 2;
+  LaLns solver(options);
+  Subproblem sub = allRobots(w, 20.0);
+  sub.ends_when_stalled = true;
+  const Outcome o = solveWith(solver, w, sub);
+  EXPECT_EQ(o.result.status, SolveStatus::Infeasible) << describe(o);
+}
+
 }  // namespace
 }  // namespace fleet_planner::test

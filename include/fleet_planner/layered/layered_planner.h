@@ -50,6 +50,10 @@ struct LayeredOptions {
   bool refine = true;     ///< replan robots one at a time around the others (plan_refinement.h)
   bool compress = true;   ///< drop every wait that no conflict needs (plan_compression.h)
   std::uint64_t seed = 0;
+  /// The caller plans the fleet another way (the planner: on a coarser lattice) if the whole
+  /// fleet, solved as one subproblem, stalls: that subproblem ends when its backend stops making
+  /// progress (Subproblem::ends_when_stalled) instead of at the deadline.
+  bool whole_fleet_ends_when_stalled = false;
 };
 
 struct LayeredResult {

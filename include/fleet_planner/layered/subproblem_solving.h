@@ -96,6 +96,8 @@ struct SubproblemSolvingOptions {
   /// of its robots.
   std::vector<std::pair<int, int>> entangled_pairs;
   bool entangled_known = false;
+  /// LayeredOptions::whole_fleet_ends_when_stalled.
+  bool whole_fleet_ends_when_stalled = false;
 };
 
 /// Solves `order` (robots, cluster and level set; cluster-major order) and merges the plans.

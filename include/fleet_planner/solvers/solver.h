@@ -65,6 +65,12 @@ struct Subproblem {
   /// a stall with every agent replanned, a count of repairs, so the outcome does not depend on
   /// the machine). A question, not a flag: the answer costs a search per robot.
   std::function<bool()> may_give_up;
+  /// The caller has another way to plan these robots if this search stalls (the planner: the
+  /// fleet on a coarser lattice), whoever stands near: a backend that repairs a plan may answer
+  /// TIMEOUT once it stops making progress (LA-LNS: `end_stall_repairs` repairs in a row
+  /// without a new lowest number of colliding pairs) rather than spend the deadline. Unlike
+  /// may_give_up, it leaves the backend's proofs as they are.
+  bool ends_when_stalled = false;
   /// Threads the backend may use for this subproblem (LA-LNS: its parking plans' orders at
   /// once); the answer does not depend on it.
   int threads = 1;

@@ -107,6 +107,10 @@ SolveResult LnsSearch::repairs(LnsRace* race, int me) {
       return outcome(timeout("stuck after " + std::to_string(stallRepairs(options_, n_)) +
                              " repairs of every robot without fewer colliding pairs"));
     }
+    if (me == 0 && problem_->ends_when_stalled && growth_.sinceBest() >= options_.end_stall_repairs) {
+      return outcome(timeout("no fewer colliding pairs in " + std::to_string(options_.end_stall_repairs) +
+                             " repairs"));
+    }
     if (race && race->beaten(me, made + 1)) return SolveResult{};
     repair();
     ++made;

@@ -37,7 +37,9 @@
 /// TIMEOUT. Same input and seed, same plan. When the caller has something else to try
 /// (Subproblem::may_give_up), it answers TIMEOUT as soon as `stall_repairs` repairs with every
 /// agent in the neighbourhood bring no fewer colliding pairs (`knot_stall_repairs` for a
-/// subproblem of at most `joint_robots` robots), rather than at the deadline.
+/// subproblem of at most `joint_robots` robots), rather than at the deadline; when the caller
+/// has another way to plan the whole subproblem (Subproblem::ends_when_stalled), as soon as
+/// `end_stall_repairs` repairs in a row bring no new lowest number of colliding pairs.
 #include "fleet_planner/solvers/solver.h"
 
 namespace fleet_planner {
@@ -53,6 +55,10 @@ struct LaLnsOptions {
   /// order, a group's joint searches not repeated while no path is kept), so it is stuck
   /// sooner. Counts only for giving up (Subproblem::may_give_up).
   int knot_stall_repairs = 2;
+  /// Repairs in a row without a new lowest number of colliding pairs after which a subproblem
+  /// whose caller has another way to plan it (Subproblem::ends_when_stalled) ends: TIMEOUT,
+  /// "no fewer colliding pairs in N repairs".
+  int end_stall_repairs = 10;
   /// Cost of one colliding step in the low level, in steps of path length.
   int collision_cost = 16;
   /// Expansions of one low-level search before it gives up.

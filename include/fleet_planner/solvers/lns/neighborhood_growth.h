@@ -19,9 +19,10 @@ class NeighborhoodGrowth {
     if (colliding_pairs < best_) {
       best_ = colliding_pairs;
       stalled_ = 0;
+      since_best_ = 0;
       size_ = base_;
       stalls_at_every_agent_ = 0;
-    } else if (++stalled_ >= stall_repairs_) {
+    } else if (++since_best_, ++stalled_ >= stall_repairs_) {
       if (size_ == agents_) ++stalls_at_every_agent_;
       size_ = std::min(2 * size_, agents_);
       stalled_ = 0;
@@ -32,6 +33,8 @@ class NeighborhoodGrowth {
   /// Stalls (stall_repairs repairs each) since the last new lowest number of colliding pairs
   /// with every agent in the neighbourhood.
   int exhausted() const { return stalls_at_every_agent_; }
+  /// Repairs since the last new lowest number of colliding pairs (whatever their size).
+  int sinceBest() const { return since_best_; }
 
  private:
   int base_;
@@ -39,7 +42,8 @@ class NeighborhoodGrowth {
   int agents_;
   int size_;
   int best_ = std::numeric_limits<int>::max();
-  int stalled_ = 0;  // repairs since best_ was reached
+  int stalled_ = 0;     // repairs since best_ was reached or the size last grew
+  int since_best_ = 0;  // repairs since best_ was reached
   int stalls_at_every_agent_ = 0;
 };
 
