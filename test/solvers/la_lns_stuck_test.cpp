@@ -8,6 +8,7 @@
 #include "fleet_planner/solvers/lns/la_lns.h"
 #include "solver_test_util.h"
 #include "test_maps.h"
+#include "tiny_worlds.h"
 
 namespace fleet_planner::test {
 namespace {
@@ -17,8 +18,7 @@ namespace {
 // says so after a few repairs of every robot (for two robots, each the whole joint repair:
 // knot_stall_repairs of them), long before its budget; otherwise it spends the budget.
 TEST(LaLns, GivesUpWhenStuckOnlyIfTheCallerMayTrySomethingElse) {
-  const int n = 16;
-  const World w(freeMap(n, 1), {dot("a", {0, 0, 0}, {n - 3, 0, 0}), dot("b", {n - 3, 0, 2}, {0, 0, 2})});
+  const World w = swapInARow(16);
   std::map<int, long long> given_up_after;  // expansions, by knot_stall_repairs
   for (const int knot_stall : {3, 6})
     for (const bool may_give_up : {true, false}) {
@@ -53,8 +53,7 @@ TEST(LaLns, GivesUpWhenStuckOnlyIfTheCallerMayTrySomethingElse) {
 // search again. It runs once: the expansions it adds are the same whether LA-LNS gives up
 // after 3 or after 6 stalled repairs.
 TEST(LaLns, DoesNotRepeatAJointSearchOnTheSamePaths) {
-  const int n = 16;
-  const World w(freeMap(n, 1), {dot("a", {0, 0, 0}, {n - 3, 0, 0}), dot("b", {n - 3, 0, 2}, {0, 0, 2})});
+  const World w = swapInARow(16);
   std::map<int, long long> added;  // expansions of the joint searches, by knot_stall_repairs
   for (const int knot_stall : {3, 6}) {
     std::map<long long, long long> expansions;  // by joint_search_nodes
@@ -83,10 +82,7 @@ TEST(LaLns, DoesNotRepeatAJointSearchOnTheSamePaths) {
 // robots of other subproblems stand among the static obstacles and could step aside: no pair
 // proof is run, and LA-LNS gives up when stuck, as it would after a proof.
 TEST(LaLns, LeavesPairProofsToTheCallerThatMayGiveUp) {
-  const int n = 16;
-  const World w(mapFromRows({std::string(n, '.'), std::string(n - 1, '@') + "."}),
-                {dot("a", {0, 0, 0}, {n - 3, 0, 0}), dot("b", {n - 3, 0, 2}, {0, 0, 2}),
-                 dot("c", {n - 1, 1, 1}, {n - 1, 1, 1})});
+  const World w = swapInACorridorWithAPocket(16);
   for (const bool may_give_up : {false, true}) {
     SCOPED_TRACE(may_give_up ? "may give up" : "alone");
     LaLnsOptions options;
@@ -109,8 +105,7 @@ TEST(LaLns, LeavesPairProofsToTheCallerThatMayGiveUp) {
 // end_stall_repairs repairs in a row without fewer colliding pairs, sooner for fewer, long
 // before its budget; without the flag it spends the budget.
 TEST(LaLns, EndsAfterStalledRepairsWhenTheCallerHasAnotherWay) {
-  const int n = 16;
-  const World w(freeMap(n, 1), {dot("a", {0, 0, 0}, {n - 3, 0, 0}), dot("b", {n - 3, 0, 2}, {0, 0, 2})});
+  const World w = swapInARow(16);
   std::map<int, long long> ended_after;  // expansions, by end_stall_repairs
   for (const int stalled : {4, 8})
     for (const bool another_way : {true, false}) {
@@ -138,10 +133,7 @@ TEST(LaLns, EndsAfterStalledRepairsWhenTheCallerHasAnotherWay) {
 // Unlike may_give_up, ending when stalled keeps the pair proofs: the corridor swap that the
 // pair proof decides is INFEASIBLE whether or not the caller has another way.
 TEST(LaLns, KeepsPairProofsWhenItEndsOnAStall) {
-  const int n = 16;
-  const World w(mapFromRows({std::string(n, '.'), std::string(n - 1, '@') + "."}),
-                {dot("a", {0, 0, 0}, {n - 3, 0, 0}), dot("b", {n - 3, 0, 2}, {0, 0, 2}),
-                 dot("c", {n - 1, 1, 1}, {n - 1, 1, 1})});
+  const World w = swapInACorridorWithAPocket(16);
   LaLnsOptions options;
   options.joint_search_nodes = 500;
   options.end_stall_repairs = 2;

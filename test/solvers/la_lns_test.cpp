@@ -15,6 +15,7 @@
 #include "fleet_planner/solvers/search/space_time_astar.h"
 #include "pocket_corridor.h"
 #include "solver_test_util.h"
+#include "tiny_worlds.h"
 #include "test_maps.h"
 
 namespace fleet_planner::test {
@@ -377,10 +378,7 @@ TEST(LaLns, ProvesAnImpossibleSwapAndNamesBothRobots) {
 // sanitizers. The third robot, at its target in the pocket at the corridor's end, is not named:
 // the two cannot swap even with the pocket free.
 TEST(LaLns, ProvesAnImpossibleSwapInALongCorridorByThePairAlone) {
-  const int n = 16;
-  const World w(mapFromRows({std::string(n, '.'), std::string(n - 1, '@') + "."}),
-                {dot("a", {0, 0, 0}, {n - 3, 0, 0}), dot("b", {n - 3, 0, 2}, {0, 0, 2}),
-                 dot("c", {n - 1, 1, 1}, {n - 1, 1, 1})});
+  const World w = swapInACorridorWithAPocket(16);
   LaLnsOptions options;
   options.joint_search_nodes = 500;
   LaLns solver(options);

@@ -35,6 +35,18 @@ TEST(NeighborhoodGrowth, CountsStallsWithEveryAgentUntilProgress) {
   EXPECT_EQ(g.exhausted(), 0);
 }
 
+TEST(NeighborhoodGrowth, CountsRepairsSinceTheLowestWhateverTheSize) {
+  NeighborhoodGrowth g(/*base=*/2, /*stall_repairs=*/2, /*agents=*/8);
+  EXPECT_EQ(g.next(5), 2);
+  EXPECT_EQ(g.sinceBest(), 0);
+  for (int k = 1; k <= 5; ++k) {
+    g.next(5);
+    EXPECT_EQ(g.sinceBest(), k) << "the size grows meanwhile";
+  }
+  g.next(4);
+  EXPECT_EQ(g.sinceBest(), 0);  // progress
+}
+
 TEST(NeighborhoodGrowth, NeverMoreThanTheAgents) {
   NeighborhoodGrowth g(8, 1, 3);
   EXPECT_EQ(g.next(2), 3);

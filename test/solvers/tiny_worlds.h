@@ -1,7 +1,7 @@
 #pragma once
 // Tiny worlds for the tests that compare a search with the exhaustive reference
 // (exhaustive_search.h): random ones (a few cells, a few walls, 2-3 dots and bars at random
-// poses), and a corridor that holds a robot's target.
+// poses), and a corridor that holds a robot's target; and two swaps that cannot be done.
 #include <memory>
 #include <string>
 #include <vector>
@@ -45,6 +45,19 @@ inline World corridorToATarget() {
   return World(mapFromRows({"@@@@@@@@@@", "@........@", "@........@", "@@@@.@@@@@", "@@@@.@@@@@", "@@@@.@@@@@",
                             "@@@@.@@@@@", "@........@", "@........@", "@@@@@@@@@@"}),
                {dot("a", {2, 8, 0}, {4, 4, 3}), dot("b", {4, 1, 2}, {6, 8, 0}), dot("c", {7, 7, 1}, {1, 1, 0})});
+}
+
+// Two dots swapping ends of a one-row corridor n cells long: impossible.
+inline World swapInARow(int n) {
+  return World(freeMap(n, 1), {dot("a", {0, 0, 0}, {n - 3, 0, 0}), dot("b", {n - 3, 0, 2}, {0, 0, 2})});
+}
+
+// The same swap in the top row of two, the lower row a wall but for a pocket at its end, where
+// a third dot stands at its target: still impossible, with the pocket free or not.
+inline World swapInACorridorWithAPocket(int n) {
+  return World(mapFromRows({std::string(n, '.'), std::string(n - 1, '@') + "."}),
+               {dot("a", {0, 0, 0}, {n - 3, 0, 0}), dot("b", {n - 3, 0, 2}, {0, 0, 2}),
+                dot("c", {n - 1, 1, 1}, {n - 1, 1, 1})});
 }
 
 }  // namespace fleet_planner::test
