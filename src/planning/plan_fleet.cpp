@@ -228,8 +228,8 @@ PlanningResult planFleet(const GridMap& map, const Instance& instance, const Pla
   // is planned again on a lattice twice as coarse in the rest: other rows and columns and fewer
   // states, where a knot of a few large robots in an aisle that the finer lattice's searches
   // did not untie may come apart. A fleet solved as one subproblem ends there as soon as its
-  // search stalls, so that the coarser lattice gets the time. Its answer is kept if it is a plan (or an internal error);
-  // otherwise the first answer stands, with a note.
+  // search stalls, so that the coarser lattice gets the time. Its answer is kept if it is a
+  // plan (or an internal error); otherwise the first answer stands, with a note.
   const int first = initialLatticeStep(options, instance);
   const bool second_chance =
       options.lattice_step <= 0 && first > 1 && options.budget.default_lattice_share < 1.0;

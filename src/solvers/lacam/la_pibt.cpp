@@ -24,7 +24,6 @@ LaPibt::LaPibt(const SearchSpace& space, std::uint64_t seed, bool remember_escap
     : space_(space),
       rng_(seed),
       seen_agent_(space.numAgents(), 0),
-      escapes_(remember_escapes ? kEscapeSlots : 0),
       candidates_at_(space.numAgents(), kNoState),
       candidates_(space.numAgents()),
       candidate_distances_(space.numAgents()),
@@ -198,8 +197,15 @@ StateChoices LaPibt::cachedEscape(int a, StateId from, int pusher, StateId pushe
                                       static_cast<std::uint32_t>(pusher_from);
   Escape* slot = nullptr;
   if (remember_escapes_) {
-    slot = &escapes_[((agent_state * 0x9e3779b97f4a7c15ULL) ^ pusher_motion) * 0xff51afd7ed558ccdULL >> 48 &
-                     (kEscapeSlots - 1)];
+    // Allocated at the first push, about a thousand slots an agent: the many small searches
+    // (pair proofs, a knot alone) pay little for it.
+    if (escapes_.empty()) {
+      std::size_t slots = 1024;
+      while (slots < kEscapeSlots && slots < 1024 * static_cast<std::size_t>(space_.numAgents())) slots *= 2;
+      escapes_.resize(slots);
+    }
+    const std::uint64_t hash = ((agent_state * 0x9e3779b97f4a7c15ULL) ^ pusher_motion) * 0xff51afd7ed558ccdULL;
+    slot = &escapes_[(hash >> 40) & (escapes_.size() - 1)];
     if (slot->agent_state == agent_state && slot->pusher_motion == pusher_motion) return slot->steps;
   }
   const GridPose p = space_.graph(pusher).pose(pusher_from);

@@ -124,7 +124,7 @@ class LaPibt {
     std::uint64_t pusher_motion = 0;                // (pusher << 35) | (action << 32) | state
     StateChoices steps;
   };
-  static constexpr std::size_t kEscapeSlots = 1 << 16;
+  static constexpr std::size_t kEscapeSlots = 1 << 16;  // at most
   std::vector<Escape> escapes_;
 
   mutable std::vector<std::uint32_t> seen_;
