@@ -15,8 +15,8 @@
 #include "fleet_planner/solvers/search/space_time_astar.h"
 #include "pocket_corridor.h"
 #include "solver_test_util.h"
-#include "tiny_worlds.h"
 #include "test_maps.h"
+#include "tiny_worlds.h"
 
 namespace fleet_planner::test {
 namespace {

@@ -188,7 +188,7 @@ class LacamSearch {
   void expandLow(int id, int low, const Config& current) {
     const int depth = nodes_[id].tree[low].depth;
     const int agent = orders_.row(id)[depth];
-    StateChoices options = pibt_.candidatesOf(agent, current[agent]);
+    StateChoices options = pibt_.candidates(agent, current[agent]);
     // Shuffle with the seed (Fisher-Yates) so that no direction is always tried first.
     for (int i = options.size(); i > 1; --i) {
       options.swap(i - 1, static_cast<int>(pibt_.rng().uniformInt(0, i - 1)));

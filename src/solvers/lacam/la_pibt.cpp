@@ -89,22 +89,21 @@ void LaPibt::claimFootprints(const Config& current) {
   }
 }
 
-StateChoices LaPibt::candidates(int a, StateId s) const {
-  StateChoices out;
+const StateChoices& LaPibt::candidates(int a, StateId s) {
+  StateChoices& out = candidates_[a];
+  if (candidates_at_[a] == s) return out;
+  std::array<int, kActions>& distance = candidate_distances_[a];
+  out = StateChoices{};
+  distance[0] = space_.distance(a, s);
   out.push(s, Action::Wait);
   space_.graph(a).forEachSuccessor(s, [&](Action action, StateId next) {
-    if (space_.distance(a, next) >= 0 && space_.allows(a, s, action)) out.push(next, action);
+    const int d = space_.distance(a, next);
+    if (d < 0 || !space_.allows(a, s, action)) return;
+    distance[out.size()] = d;
+    out.push(next, action);
   });
+  candidates_at_[a] = s;
   return out;
-}
-
-const StateChoices& LaPibt::candidatesOf(int a, StateId s) {
-  if (candidates_at_[a] != s) {
-    candidates_[a] = candidates(a, s);
-    candidates_at_[a] = s;
-    for (int i = 0; i < candidates_[a].size(); ++i) candidate_distances_[a][i] = space_.distance(a, candidates_[a][i]);
-  }
-  return candidates_[a];
 }
 
 bool LaPibt::fits(int a, StateId from, Action action, std::vector<int>* in_way) const {
@@ -225,7 +224,7 @@ bool LaPibt::assign(int a, const Config& current, Config& next, int pusher, Stat
     options = cachedEscape(a, current[a], pusher, current[pusher], action);
   } else {
     // Best first by distance to the target; random tie-break from the seed.
-    const StateChoices& all = candidatesOf(a, current[a]);
+    const StateChoices& all = candidates(a, current[a]);
     struct Ranked {
       int distance;
       std::uint64_t tie;

@@ -52,12 +52,12 @@ class LaPibt {
   /// states and the pusher's motion), which makes the same steps several times faster.
   LaPibt(const SearchSpace& space, std::uint64_t seed, bool remember_escapes = true);
 
-  /// Next states of agent a from s: wait first, then every allowed action's result.
-  StateChoices candidates(int a, StateId s) const;
-  /// candidates(a, s), remembered per agent for its last state: most agents of a packed fleet
-  /// stand still from one configuration to the next, and the graph's and distance table's
-  /// reads behind an answer are cache misses.
-  const StateChoices& candidatesOf(int a, StateId s);
+  /// Next states of agent a from s: wait first, then every allowed action's result (with their
+  /// distances to a's target in candidate_distances_[a]). Remembered per agent for its last
+  /// state, valid until a's next call: agents of a packed fleet often stand still from one
+  /// configuration to the next, and the graph's and distance table's reads behind an answer are
+  /// cache misses.
+  const StateChoices& candidates(int a, StateId s);
 
   /// Fills `next` from `current`: agents in `fixed` (agent, next state) first, in that order,
   /// then the others in `order`. Returns false if the fixed moves cannot all be made.
@@ -130,7 +130,7 @@ class LaPibt {
   mutable std::vector<std::uint32_t> seen_;
   mutable std::uint32_t seen_query_ = 0;
   std::vector<StateId> candidates_at_;       // per agent: the state of candidates_[a]
-  std::vector<StateChoices> candidates_;     // per agent: candidates() at candidates_at_[a]
+  std::vector<StateChoices> candidates_;     // per agent: its candidates() at candidates_at_[a]
   std::vector<std::array<int, kActions>> candidate_distances_;  // and their distances to target
   std::vector<bool> assigned_;  // assigned, or being assigned (then counted as waiting)
   std::vector<int> in_way_;     // assign()'s agents in the way, a stack shared by nested pushes
