@@ -1,11 +1,16 @@
 // The second lattice (plan_fleet.h): a fleet that times out on its default lattice is planned in
 // the rest of the call on a lattice twice as coarse; a lattice the caller chose gets the whole
 // call; when the coarser lattice fails too, the first answer stands, with a note. The default
-// lattice's share is set to nothing here, so that its attempt times out on every machine.
+// lattice's share is set to nothing here, so that its attempt times out on every machine. A
+// whole fleet on the default lattice is told that a coarser one follows (it may end when it
+// stalls).
 #include <gtest/gtest.h>
+
+#include <mutex>
 
 #include "fleet_planner/model/plan_validator.h"
 #include "fleet_planner/planning/plan_fleet.h"
+#include "fleet_planner/solvers/registry.h"
 #include "test_maps.h"
 #include "test_robots.h"
 #include "valid_on_cells.h"
@@ -87,6 +92,46 @@ TEST(SecondLattice, WhenTheCoarserLatticeFailsTooTheFirstAnswerStands) {
   const PlanningResult planned = planFleet(map, instance, o);
   ASSERT_TRUE(validOnCells(map, instance, planned));
   EXPECT_EQ(planned.lattice_step, 2);
+}
+
+// A test-only backend: LA-LNS, recording Subproblem::ends_when_stalled of every call.
+std::mutex told_mutex;
+std::vector<bool> told;
+
+class TellsEnd : public Solver {
+ public:
+  std::string name() const override { return "ends_when_stalled_test_backend"; }
+  bool avoidsMovingObstacles() const override { return true; }
+  SolveResult solve(const Subproblem& p) override {
+    {
+      const std::lock_guard<std::mutex> lock(told_mutex);
+      told.push_back(p.ends_when_stalled);
+    }
+    return makeSolver("la_lns")->solve(p);
+  }
+};
+const bool kTellsEnd = registerSolver("ends_when_stalled_test_backend", [] { return std::make_unique<TellsEnd>(); });
+
+TEST(SecondLattice, AWholeFleetOnTheDefaultLatticeMayEndWhenItStalls) {
+  ASSERT_TRUE(kTellsEnd);
+  const GridMap map = freeMap(60, 24);
+  const Instance instance = crossing();
+  for (const int chosen : {0, 2}) {
+    SCOPED_TRACE(chosen == 0 ? "default lattice (2), a coarser one follows" : "lattice 2 chosen");
+    PlanningOptions o;
+    o.threads = 1;
+    o.time_limit = 20.0;
+    o.decompose = false;  // the whole fleet as one subproblem
+    o.backend = "ends_when_stalled_test_backend";
+    o.fallback = "";
+    o.lattice_step = chosen;
+    told.clear();
+    const PlanningResult r = planFleet(map, instance, o);
+    ASSERT_TRUE(validOnCells(map, instance, r));
+    EXPECT_EQ(r.lattice_step, 2);
+    ASSERT_FALSE(told.empty());
+    for (const bool t : told) EXPECT_EQ(t, chosen == 0);
+  }
 }
 
 }  // namespace
