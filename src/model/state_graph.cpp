@@ -4,7 +4,13 @@ namespace fleet_planner {
 
 StateGraph::StateGraph(const GridMap& map, const ObstacleIndex& obstacles,
                        std::shared_ptr<const FootprintCells> cells, ActionModel model)
-    : width_(map.width()), height_(map.height()), cells_(std::move(cells)), model_(model) {
+    : width_(map.width()), height_(map.height()),
+      cells_(std::move(cells)), model_(model) {
+  int log2_width = 0;
+  while ((std::int64_t{1} << log2_width) < width_) ++log2_width;
+  row_shift_ = 29 + log2_width;
+  const std::uint64_t w = static_cast<std::uint64_t>(std::max(width_, 1));
+  row_magic_ = ((std::uint64_t{1} << row_shift_) + w - 1) / w;
   flags_.assign(static_cast<std::size_t>(map.numCells()) * kHeadings, 0);
   const FootprintCells& fc = *cells_;
   for (int y = 0; y < height_; ++y) {

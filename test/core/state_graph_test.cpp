@@ -3,6 +3,9 @@
 
 #include <gtest/gtest.h>
 
+#include <limits>
+#include <vector>
+
 #include "fleet_planner/model/fleet_graphs.h"
 #include "fleet_planner/model/graph_search.h"
 #include "fleet_planner/runtime/random.h"
@@ -33,6 +36,26 @@ TEST(StateGraph, BackwardMovesAreAnOption) {
   EXPECT_EQ(g.numEdges(), 24 + 24 + 72);
   EXPECT_TRUE(g.allows(g.id({1, 1, 0}), Action::Backward));
   EXPECT_EQ(g.pose(g.next(g.id({1, 1, 0}), Action::Backward)), (GridPose{0, 1, 0}));
+}
+
+// pose() finds the row by a multiplication: it must agree with the division for every state
+// id, on every width, up to the largest id (pose() reads no map, so a small map's graph can be
+// asked about any id).
+TEST(StateGraph, PoseIsTheDivisionForEveryIdAndWidth) {
+  Rng rng(7);
+  std::vector<int> widths;
+  for (int w = 1; w <= 70; ++w) widths.push_back(w);
+  for (int w : {127, 128, 129, 255, 256, 257, 1000, 1023, 1024, 4099, 40000, 65535, 65536, 1 << 20}) widths.push_back(w);
+  for (int w : widths) {
+    const StateGraph g = build(freeMap(w, 1), Footprint::circle(0.4));
+    auto expectDivision = [&](StateId s) {
+      const int cell = s / kHeadings;
+      ASSERT_EQ(g.pose(s), (GridPose{cell % w, cell / w, s % kHeadings})) << "width " << w << " id " << s;
+    };
+    for (StateId s = 0; s < 20000; ++s) expectDivision(s);
+    for (StateId s = std::numeric_limits<StateId>::max(); s > std::numeric_limits<StateId>::max() - 20000; --s) expectDivision(s);
+    for (int i = 0; i < 20000; ++i) expectDivision(static_cast<StateId>(rng.uniformInt(0, std::numeric_limits<StateId>::max())));
+  }
 }
 
 TEST(StateGraph, BlockedCellRemovesItsStates) {
