@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <memory>
+#include <tuple>
 #include <vector>
 
 #include "fleet_planner/model/plan_validator.h"
@@ -93,6 +94,45 @@ TEST(SearchLookups, MarkedStepsFollowRemovals) {
     differ += after != before ? 1 : 0;
   }
   EXPECT_GT(differ, 10);
+}
+
+// The same as walks grow: each path put in makes the horizon longer (up to 21 words of steps)
+// after cells' steps have been kept for shorter ones; the kept steps widen and still answer as
+// a new table's.
+TEST(SearchLookups, MarkedStepsFollowAGrowingHorizon) {
+  const World w(freeMap(40, 40), largeRobots());
+  const SearchSpace space(allRobots(w));
+  Rng rng(5);
+  for (int round = 0; round < 10; ++round) {
+    const int a = static_cast<int>(rng.uniformInt(0, space.numAgents() - 1));
+    SoftPathTable table(space);
+    std::vector<StatePath> walks;
+    for (int b = 0; b < space.numAgents(); ++b)
+      walks.push_back(randomWalk(space, b, 40 + 300 * b + static_cast<int>(rng.uniformInt(0, 60)), rng));
+    std::vector<StateId> asked;
+    int words_seen = 0;
+    for (int b = 0; b < space.numAgents(); ++b) {
+      if (b == a) continue;
+      table.insert(b, walks[b]);
+      for (int k = 0; k < 10; ++k) asked.push_back(somewhere(space, a, walks, rng));
+      SoftPathTable fresh(space);
+      for (int c = 0; c <= b; ++c) {
+        if (c != a) fresh.insert(c, walks[c]);
+      }
+      for (StateId s : asked) {
+        const std::size_t words = static_cast<std::size_t>(table.lastMove() + 2) / 64 + 1;
+        std::vector<std::uint64_t> kept(words, 0), anew(words, 0);
+        int lo = SoftPathTable::kNever, hi = -1, forever = SoftPathTable::kNever;
+        int lo2 = lo, hi2 = hi, forever2 = forever;
+        table.markUnsafe(a, s, Action::Wait, kept.data(), lo, hi, forever, 0);
+        fresh.markUnsafe(a, s, Action::Wait, anew.data(), lo2, hi2, forever2, 0);
+        ASSERT_EQ(kept, anew) << "round " << round << ", robot " << b;
+        ASSERT_EQ(std::make_tuple(lo, hi, forever), std::make_tuple(lo2, hi2, forever2));
+        words_seen = std::max(words_seen, hi < 0 ? 0 : hi / 64 + 1);
+      }
+    }
+    EXPECT_GT(words_seen, 10) << "round " << round;
+  }
 }
 
 // The safe interval search reads a move that decomposes from its extra cells alone, its bodies

@@ -49,7 +49,8 @@ void SoftPathTable::index(int a, bool on) {
       return;
     }
     std::vector<Span>& spans = cell_spans_[cell];
-    if (step_slot_[cell] >= 0) cell_steps_[step_slot_[cell]].stale = true;
+    staleSteps(cell);
+    if (step_slot_[cell] == kNoSpans) step_slot_[cell] = kNoSlot;
     if (last == kNever) countEnd(cell, a, 1);
     if (!spans.empty() && spans.back().agent == a && spans.back().last == t - 1) {
       spans.back().last = last;
@@ -75,13 +76,14 @@ void SoftPathTable::index(int a, bool on) {
   const CellSet& body = space_.cells(a).body(end.heading);
   forEachMapCell(body, {end.x, end.y}, width_, height_, [&](int cell) { span(cell, steps, kNever); });
   for (int cell : touched) {
-    if (step_slot_[cell] >= 0) cell_steps_[step_slot_[cell]].stale = true;
+    staleSteps(cell);
     std::vector<Span>& spans = cell_spans_[cell];
     for (const Span& r : spans) {
       if (r.agent == a && r.last == kNever) countEnd(cell, a, -1);
     }
     spans.erase(std::remove_if(spans.begin(), spans.end(), [a](const Span& r) { return r.agent == a; }),
                 spans.end());
+    if (spans.empty() && step_slot_[cell] == kNoSlot) step_slot_[cell] = kNoSpans;
     std::uint64_t blocks = 0;
     for (const Span& r : spans) blocks |= blocksOf(r.first, r.last);
     cell_blocks_[cell] = blocks;
@@ -95,7 +97,7 @@ void SoftPathTable::insert(int a, const StatePath& path) {
     cell_stamp_.assign(cell_spans_.size(), 0);
     end_cells_.assign(cell_spans_.size(), 0);
     end_agents_.assign(cell_spans_.size(), 0);
-    step_slot_.assign(cell_spans_.size(), -1);
+    step_slot_.assign(cell_spans_.size(), kNoSpans);
     end_squares_x_ = (width_ + kEndSide - 1) / kEndSide;
     end_squares_.assign(static_cast<std::size_t>(end_squares_x_) * ((height_ + kEndSide - 1) / kEndSide), 0);
   }
@@ -245,34 +247,60 @@ void SoftPathTable::unsafeRuns(int a, StateId s, Action action,
   for (int b : met_) runs.insert(runs.end(), agent_runs_[b].begin(), agent_runs_[b].end());
 }
 
-const SoftPathTable::CellSteps& SoftPathTable::stepsOf(int cell) const {
+namespace {
+
+// A record's head (SoftPathTable::stepsOf): first and last in word 1, forever and the stale
+// flag in word 2.
+std::uint64_t packPair(int low, std::uint32_t high) {
+  return static_cast<std::uint32_t>(low) | (static_cast<std::uint64_t>(high) << 32);
+}
+int lowOf(std::uint64_t word) { return static_cast<int>(static_cast<std::uint32_t>(word)); }
+int highOf(std::uint64_t word) { return static_cast<int>(static_cast<std::uint32_t>(word >> 32)); }
+
+}  // namespace
+
+const std::uint64_t* SoftPathTable::stepsOf(int cell) const {
   int& slot = step_slot_[cell];
   if (slot < 0) {
-    slot = static_cast<int>(cell_steps_.size());
-    cell_steps_.emplace_back();
+    slot = step_slots_++;
+    step_records_.resize(recordAt(step_slots_), 0);
+    step_records_[recordAt(slot) + 2] = packPair(kNever, 1);  // stale: built below
   }
-  CellSteps& c = cell_steps_[slot];
-  if (!c.stale) return c;
-  c.stale = false;
-  c.first = kNever;
-  c.last = -1;
-  c.forever = kNever;
+  if (!(step_records_[recordAt(slot) + 2] >> 32)) return &step_records_[recordAt(slot)];
+  int first = kNever, last = -1, forever = kNever;
   for (const Span& r : cell_spans_[cell]) {
     if (r.last == kNever) {
-      c.forever = std::min(c.forever, r.first);
+      forever = std::min(forever, r.first);
     } else {
-      c.first = std::min(c.first, r.first);
-      c.last = std::max(c.last, r.last);
+      first = std::min(first, r.first);
+      last = std::max(last, r.last);
     }
   }
-  c.words.assign(c.last < 0 ? 0 : static_cast<std::size_t>(c.last / 64) + 1, 0);
-  c.used = 0;
+  const int words = last < 0 ? 0 : last / 64 + 1;
+  if (words > step_stride_) {  // every record widened, its words kept
+    const int old_stride = step_stride_;
+    const std::vector<std::uint64_t> old = std::move(step_records_);
+    step_stride_ = words;
+    step_records_.assign(recordAt(step_slots_), 0);
+    for (int k = 0; k < step_slots_; ++k) {
+      const std::size_t from = static_cast<std::size_t>(k) * (kHeadWords + old_stride);
+      std::copy(old.begin() + static_cast<std::ptrdiff_t>(from),
+                old.begin() + static_cast<std::ptrdiff_t>(from + kHeadWords + old_stride),
+                step_records_.begin() + static_cast<std::ptrdiff_t>(recordAt(k)));
+    }
+  }
+  std::uint64_t* record = &step_records_[recordAt(slot)];
+  std::fill(record + kHeadWords, record + kHeadWords + step_stride_, 0);
+  std::uint64_t used = 0;
   for (const Span& r : cell_spans_[cell]) {
     if (r.last == kNever) continue;
-    markSteps(c.words.data(), r.first, r.last);
-    c.used |= bitRange(r.first / 64, r.last / 64);
+    markSteps(record + kHeadWords, r.first, r.last);
+    used |= bitRange(r.first / 64, r.last / 64);
   }
-  return c;
+  record[0] = used;
+  record[1] = packPair(first, static_cast<std::uint32_t>(last));
+  record[2] = packPair(forever, 0);
+  return record;
 }
 
 void SoftPathTable::markUnsafe(int a, StateId s, Action action, std::uint64_t* steps, int& lo, int& hi,
@@ -287,18 +315,22 @@ void SoftPathTable::markUnsafe(int a, StateId s, Action action, std::uint64_t* s
     const std::uint64_t first_mask = ~std::uint64_t{0} << (from % 64);
     const std::uint64_t from_word_on = first_word >= 64 ? 0 : ~std::uint64_t{0} << first_word;
     forEachMapCell(space_.probe(a, p.heading, action), {p.x, p.y}, width_, height_, [&](int cell) {
-      if (cell_spans_[cell].empty()) return;
-      const CellSteps& c = stepsOf(cell);
-      forever_from = std::min(forever_from, c.forever);
-      if (c.last < from) return;  // every step it is swept ends before the search's first
-      std::uint64_t used = c.used & from_word_on;
+      const int slot = step_slot_[cell];
+      if (slot == kNoSpans) return;  // nobody sweeps it
+      const std::uint64_t* c = slot >= 0 ? &step_records_[recordAt(slot)] : nullptr;
+      if (c == nullptr || (c[2] >> 32)) c = stepsOf(cell);  // none yet, or stale
+      const int first = lowOf(c[1]), last = highOf(c[1]);
+      forever_from = std::min(forever_from, lowOf(c[2]));
+      if (last < from) return;  // every step it is swept ends before the search's first
+      const std::uint64_t* words = c + kHeadWords;
+      std::uint64_t used = c[0] & from_word_on;
       while (used != 0) {
         const int w = __builtin_ctzll(used);
         used &= used - 1;
-        steps[w] |= c.words[w] & (w == first_word ? first_mask : ~std::uint64_t{0});
+        steps[w] |= words[w] & (w == first_word ? first_mask : ~std::uint64_t{0});
       }
-      lo = std::min(lo, std::max(c.first, from));
-      hi = std::max(hi, c.last);
+      lo = std::min(lo, std::max(first, from));
+      hi = std::max(hi, last);
     });
     return;
   }

@@ -132,20 +132,29 @@ class SoftPathTable {
   // end_cells_ counts one (the usual case), so that its spans need not be read.
   std::vector<int> end_agents_;
   void countEnd(int cell, int agent, int delta);
-  // The steps during which a cell is swept by spans that end, as a bitset (bit t % 64 of
-  // words[t / 64]; first..last: the steps they cover, none if last < 0) whose nonzero words are
-  // the bits of `used`, and the first step from which someone stands there for good (kNever:
-  // none); rebuilt from the spans when asked after they changed (stale). Kept only for the
-  // cells markUnsafe has read (horizons of at most 64 words), by slot.
-  struct CellSteps {
-    std::vector<std::uint64_t> words;
-    std::uint64_t used = 0;
-    int first = kNever, last = -1, forever = kNever;
-    bool stale = true;
-  };
-  const CellSteps& stepsOf(int cell) const;
-  mutable std::vector<int> step_slot_;  // per map cell, its CellSteps' index; -1 none yet
-  mutable std::vector<CellSteps> cell_steps_;
+  // The steps during which a cell is swept by spans that end, as a bitset (bit t % 64 of word
+  // t / 64; first..last: the steps they cover, none if last < 0) whose nonzero words are the
+  // bits of `used`, and the first step from which someone stands there for good (kNever: none);
+  // rebuilt from the spans when asked after they changed (stale). Kept only for the cells
+  // markUnsafe has read (horizons of at most 64 words), one record each in step_records_: a
+  // head of kHeadWords words, then step_stride_ words of bits, so that a cell's answer is one
+  // read of adjacent memory (markUnsafe reads a probe's cells in turn, each a cache miss).
+  static constexpr int kHeadWords = 3;  // used; first and last; forever and stale
+  // The record of `cell`, brought up to date.
+  const std::uint64_t* stepsOf(int cell) const;
+  // Marks the record of `cell`, if any, stale.
+  void staleSteps(int cell) {
+    if (step_slot_[cell] >= 0) step_records_[recordAt(step_slot_[cell]) + 2] |= std::uint64_t{1} << 32;
+  }
+  std::size_t recordAt(int slot) const {
+    return static_cast<std::size_t>(slot) * static_cast<std::size_t>(kHeadWords + step_stride_);
+  }
+  // Per map cell, its record's index, or kNoSlot (none yet) or kNoSpans (nobody sweeps it, and
+  // no record): markUnsafe's one read of a cell before its record.
+  static constexpr int kNoSlot = -1, kNoSpans = -2;
+  mutable std::vector<int> step_slot_;
+  mutable std::vector<std::uint64_t> step_records_;
+  mutable int step_slots_ = 0, step_stride_ = 0;
   mutable std::vector<std::vector<std::pair<int, int>>> agent_runs_;  // unsafeRuns' scratch
   mutable std::vector<int> met_;                                     // its agents
   mutable std::vector<std::uint32_t> stamp_;       // dedup of query results, per agent
