@@ -135,6 +135,39 @@ TEST(SearchLookups, MarkedStepsFollowAGrowingHorizon) {
   }
 }
 
+// A turn and the opposite turn back from where it ends sweep the same cells wherever the search
+// space says so (the safe interval search then asks the table once for both), and they meet
+// the same robots there; it says so for most turns of the large robots, on lattices of 1 and 2.
+TEST(SearchLookups, ATurnAndTheTurnBackMeetTheSameRobots) {
+  for (int step = 1; step <= 2; ++step) {
+    const World w(freeMap(40, 40), largeRobots());
+    ActionModel model;
+    model.step = step;
+    std::vector<Footprint> footprints;
+    for (const Robot& r : w.instance.robots) footprints.push_back(r.footprint);
+    const FleetGraphs graphs(w.map, footprints, model);
+    Subproblem sub = allRobots(w);
+    sub.graphs = &graphs;
+    const SearchSpace space(sub);
+    int alike = 0, turns = 0;
+    for (int a = 0; a < space.numAgents(); ++a) {
+      for (int h = 0; h < kHeadings; ++h) {
+        for (Action turn : {Action::RotateCcw, Action::RotateCw}) {
+          ++turns;
+          const int back_heading = turn == Action::RotateCcw ? kRotateCcw[h] : kRotateCw[h];
+          const Action back = turn == Action::RotateCcw ? Action::RotateCw : Action::RotateCcw;
+          const bool same = space.cells(a).swept(h, turn) == space.cells(a).swept(back_heading, back);
+          ASSERT_EQ(space.turnsBackAlike(a, h, turn), same) << space.label(a) << " heading " << h;
+          if (!same) continue;
+          ++alike;
+          ASSERT_EQ(space.probe(a, h, turn), space.probe(a, back_heading, back));
+        }
+      }
+    }
+    EXPECT_GT(alike, turns / 2) << "step " << step;
+  }
+}
+
 // The safe interval search reads a move that decomposes from its extra cells alone, its bodies
 // being those of the safe intervals it leaves and enters: it still arrives when space-time A*
 // does, around the same random walks, whether they are in the soft path table or moving

@@ -201,6 +201,8 @@ void SearchSpace::makeLookups() {
           l->probes[h][act] = contactProbe(fc.swept(h, action), pitch);
           l->extras[h][act] = moveExtraOf(fc, h, action, l->probes[h][act]);
         }
+        l->turns_back_alike[h][0] = fc.swept(h, Action::RotateCcw) == fc.swept(kRotateCcw[h], Action::RotateCw);
+        l->turns_back_alike[h][1] = fc.swept(h, Action::RotateCw) == fc.swept(kRotateCw[h], Action::RotateCcw);
         l->same_wait[h] = h;
         for (int g = 0; g < h && l->same_wait[h] == h; ++g) {
           if (fc.body(g) == fc.body(h) && fc.swept(g, Action::Wait) == fc.swept(h, Action::Wait)) l->same_wait[h] = g;

@@ -54,6 +54,27 @@ class Sipp {
         return answer;
       }
     }
+    if ((action == Action::RotateCcw || action == Action::RotateCw) &&
+        space_.turnsBackAlike(a_, p.heading, action)) {
+      // The turn back from where this one ends sweeps the same cells: one answer for both (a
+      // search that turns at a cell asks both).
+      const StateId end = graph_.next(s, action);
+      const int back = static_cast<int>(action == Action::RotateCcw ? Action::RotateCw : Action::RotateCcw);
+      const int end_index = answersOf(end);
+      if (const int known = states_[end_index].unsafe[back]; known >= 0) {
+        states_[index].unsafe[act] = known;
+        return unsafe_[known];
+      }
+      const Unsafe answer = fresh(s, action, p, index, act);
+      states_[end_index].unsafe[back] = states_[index].unsafe[act];
+      return answer;
+    }
+    return fresh(s, action, p, index, act);
+  }
+
+  // unsafe()'s answer computed from the table and the reservations, kept as the answer of
+  // states_[index] for action `act`.
+  Unsafe fresh(StateId s, Action action, const GridPose& p, int index, int act) {
     int forever = kNever, lo = kNever, hi = -1;
     if (others_.lastMove() < kSteps) {
       runs_.clear();

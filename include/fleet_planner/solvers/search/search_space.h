@@ -79,6 +79,12 @@ class SearchSpace {
   /// `heading` (a disc: 0 for every heading; a block symmetric about its centre: the same for
   /// opposite headings): waiting there meets what waiting at `heading` meets.
   int sameWaitHeading(int a, int heading) const { return lookups_[a]->same_wait[heading]; }
+  /// Agent a's `turn` (RotateCcw or RotateCw) from `heading` sweeps the cells that the opposite
+  /// turn back from the heading it ends at sweeps (they cover the same angles): what one meets,
+  /// the other meets.
+  bool turnsBackAlike(int a, int heading, Action turn) const {
+    return lookups_[a]->turns_back_alike[heading][turn == Action::RotateCw ? 1 : 0];
+  }
 
   /// Empty if every agent has a valid start and target connected in its restricted graph;
   /// otherwise why not, naming the first such robot.
@@ -102,11 +108,12 @@ class SearchSpace {
   std::vector<DistanceTable> distances_;
   ReservationTable reservations_;
   // What an agent's cells give the lookups, per heading (and action): probes, moves' extra
-  // cells, the heading whose wait is the same.
+  // cells, the heading whose wait is the same, the turns that their opposite turn back matches.
   struct Lookups {
     std::array<std::array<CellSet, kActions>, kHeadings> probes;
     std::array<std::array<MoveExtra, kActions>, kHeadings> extras;
     std::array<int, kHeadings> same_wait;
+    std::array<std::array<bool, 2>, kHeadings> turns_back_alike;  // [heading][RotateCcw, RotateCw]
   };
   std::vector<std::shared_ptr<const Lookups>> lookups_;  // agents with the same cells share them
   std::string problem_;
