@@ -205,6 +205,9 @@ class Parking {
       g.forEachSuccessor(s, [&](Action act, StateId next) {
         if (space_.distance(a, next) < 0 || !space_.allows(a, s, act) || parkedForGood(a, s, act))
           return;
+        // Reached as cheaply already whatever the crowd (the way back of a turn, mostly): the
+        // crowd is not looked up.
+        if (cost[next] >= 0 && cost[next] <= cost[s] + 1) return;
         const int crowd = crowds ? crowdedMove(a, s, act, next, busy, scratch.crowd) : 0;
         if (crowd == 2) return;  // through a robot that is not to be pushed
         const int c = cost[s] + 1 + (crowd ? options_.crowd_cost : 0);
