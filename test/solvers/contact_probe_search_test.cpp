@@ -111,16 +111,11 @@ TEST(ContactProbeSearch, SoftPathTableFindsEveryContact) {
 // move and a disc's turns; a block's straight moves have no extra cells.
 TEST(ContactProbeSearch, AMoveIsItsTwoBodiesAndItsExtraCells) {
   for (int step = 1; step <= 3; ++step) {
-    const World w(freeMap(40, 40), largeRobots());
     ActionModel model;
     model.step = step;
     model.allow_backward = true;
-    std::vector<Footprint> footprints;
-    for (const Robot& r : w.instance.robots) footprints.push_back(r.footprint);
-    const FleetGraphs graphs(w.map, footprints, model);
-    Subproblem sub = allRobots(w);
-    sub.graphs = &graphs;
-    const SearchSpace space(sub);
+    const LargeRobotsOn scene(model);
+    const SearchSpace& space = scene.space;
     for (int a = 0; a < space.numAgents(); ++a) {
       for (int h = 0; h < kHeadings; ++h) {
         const StateId s = space.graph(a).id({20, 20, h});

@@ -5,6 +5,7 @@
 
 #include "fleet_planner/solvers/search/soft_path_table.h"
 #include "solver_test_util.h"
+#include "test_maps.h"
 
 namespace fleet_planner::test {
 
@@ -18,6 +19,27 @@ inline std::vector<Robot> largeRobots() {
           makeRobot("wide", Footprint::block(-4.9, -3.4, 4.9, 3.4), {24, 24, 3}, {24, 24, 3}),
           makeRobot("small", Footprint::circle(1.5), {19, 19, 0}, {19, 19, 0})};
 }
+
+// The large robots on their 40 x 40 map with graphs of the action model `model` (a lattice
+// step, backward moves), and the search space of all of them.
+struct LargeRobotsOn {
+  explicit LargeRobotsOn(ActionModel model)
+      : w(freeMap(40, 40), largeRobots()), graphs(w.map, footprintsOf(w), model), sub(withGraphs()), space(sub) {}
+  static std::vector<Footprint> footprintsOf(const World& world) {
+    std::vector<Footprint> footprints;
+    for (const Robot& r : world.instance.robots) footprints.push_back(r.footprint);
+    return footprints;
+  }
+  Subproblem withGraphs() const {
+    Subproblem all = allRobots(w);
+    all.graphs = &graphs;
+    return all;
+  }
+  const World w;
+  const FleetGraphs graphs;
+  const Subproblem sub;
+  const SearchSpace space;
+};
 
 // A random state of agent a near the others: a few cells from a random pose of their walks (in
 // `space`, which has every robot), any heading.

@@ -140,15 +140,10 @@ TEST(SearchLookups, MarkedStepsFollowAGrowingHorizon) {
 // the same robots there; it says so for most turns of the large robots, on lattices of 1 and 2.
 TEST(SearchLookups, ATurnAndTheTurnBackMeetTheSameRobots) {
   for (int step = 1; step <= 2; ++step) {
-    const World w(freeMap(40, 40), largeRobots());
     ActionModel model;
     model.step = step;
-    std::vector<Footprint> footprints;
-    for (const Robot& r : w.instance.robots) footprints.push_back(r.footprint);
-    const FleetGraphs graphs(w.map, footprints, model);
-    Subproblem sub = allRobots(w);
-    sub.graphs = &graphs;
-    const SearchSpace space(sub);
+    const LargeRobotsOn scene(model);
+    const SearchSpace& space = scene.space;
     int alike = 0, turns = 0;
     for (int a = 0; a < space.numAgents(); ++a) {
       for (int h = 0; h < kHeadings; ++h) {
