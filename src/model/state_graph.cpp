@@ -4,8 +4,7 @@ namespace fleet_planner {
 
 StateGraph::StateGraph(const GridMap& map, const ObstacleIndex& obstacles,
                        std::shared_ptr<const FootprintCells> cells, ActionModel model)
-    : width_(map.width()), height_(map.height()),
-      cells_(std::move(cells)), model_(model) {
+    : width_(map.width()), height_(map.height()), cells_(std::move(cells)), model_(model) {
   int log2_width = 0;
   while ((std::int64_t{1} << log2_width) < width_) ++log2_width;
   row_shift_ = 29 + log2_width;
