@@ -178,7 +178,10 @@ class LacamSearch {
       order[j] = agent;
     }
     std::copy(order.begin(), order.end(), orders_.append());
-    nodes_.push_back(HighNode{parent, {LowNode{-1, -1, kNoState, 0}}, 0});
+    nodes_.push_back(HighNode{parent, {}, 0});
+    // Room for the root constraint and one expansion's choices: one allocation, not four.
+    nodes_.back().tree.reserve(1 + kActions);
+    nodes_.back().tree.push_back(LowNode{-1, -1, kNoState, 0});
     ++live_low_;
     insert(id);
     ++stats_.high_level_nodes;
