@@ -1,12 +1,15 @@
-// Distance tables (distance_table.h): 2-byte storage gives back every distance it was given;
-// a search space builds them alike on one thread or several.
+// Distance tables (distance_table.h): 2-byte storage gives back every distance it was given,
+// copied or filled in a search's order; a search space builds them alike on one thread or
+// several, and they are its graphs' distances.
 #include "fleet_planner/solvers/search/distance_table.h"
+#include "fleet_planner/model/graph_search.h"
 #include "fleet_planner/solvers/search/search_space.h"
 
 #include <gtest/gtest.h>
 
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "solver_test_util.h"
@@ -41,10 +44,57 @@ TEST(DistanceTable, ADistanceOf65535StepsOrMoreTakesFourBytes) {
   expectSame(table, short_steps);
 }
 
+// Filled as a breadth-first search fills it (distances in order), the table gives back what a
+// copy of the same distances gives, also when a distance reaches 65,535 steps on the way and
+// the table widens to four bytes.
+TEST(DistanceTable, AFillInSearchOrderGivesWhatACopyGives) {
+  for (const int far : {300, 65534, 65535, 70000}) {
+    std::vector<std::int32_t> steps(12, -1);
+    const std::vector<std::pair<StateId, int>> order{{4, 0}, {9, 1}, {0, 1}, {2, 7}, {11, far - 1}, {5, far}, {7, far + 1}};
+    DistanceTable filled;
+    filled.reset(steps.size());
+    for (const auto& [s, d] : order) {
+      EXPECT_FALSE(filled.reached(s));
+      filled.set(s, d);
+      EXPECT_TRUE(filled.reached(s));
+      steps[s] = d;
+    }
+    DistanceTable copied;
+    copied.assign(steps);
+    EXPECT_EQ(filled.bytesPerState(), copied.bytesPerState()) << "farthest " << far + 1;
+    expectSame(filled, steps);
+  }
+}
+
 }  // namespace
 }  // namespace fleet_planner
 
 namespace fleet_planner::test {
+
+// With nothing else on the map, a search space's tables are the distances of the robot's own
+// graph to its target (graph_search.h's distancesTo), state by state, around walls.
+TEST(SearchSpaceDistances, TheTablesAreTheGraphsDistances) {
+  const GridMap map = mapFromRows({"..........",
+                                   "..@@@@@...",
+                                   "......@...",
+                                   ".@@@..@...",
+                                   "..........",
+                                   "....@@@@@."});
+  const std::vector<Robot> robots = {dot("r0", {0, 0, 0}, {9, 5, 2}), dot("r1", {5, 2, 1}, {0, 4, 3}),
+                                     dot("r2", {9, 0, 2}, {2, 2, 0})};
+  const World w(map, robots);
+  const SearchSpace space(allRobots(w));
+  ASSERT_TRUE(space.problem().empty()) << space.problem();
+  int reached = 0;
+  for (int r = 0; r < space.numAgents(); ++r) {
+    const std::vector<std::int32_t> expected = distancesTo(space.graph(r), space.target(r));
+    for (StateId s = 0; s < space.graph(r).stateIdCount(); ++s) {
+      ASSERT_EQ(space.distance(r, s), expected[s]) << "robot " << r << ", state " << s;
+      reached += expected[s] > 0;
+    }
+  }
+  EXPECT_GT(reached, 100);
+}
 namespace {
 
 // A search space's distance tables are built on several threads: the same tables, and the same

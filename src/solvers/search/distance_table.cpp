@@ -17,4 +17,17 @@ void DistanceTable::assign(const std::vector<std::int32_t>& steps) {
   }
 }
 
+void DistanceTable::reset(std::size_t states) {
+  std::vector<std::int32_t>().swap(wide_);
+  narrow_.assign(states, kUnreachable);
+}
+
+void DistanceTable::widen() {
+  wide_.assign(narrow_.size(), -1);
+  for (std::size_t s = 0; s < narrow_.size(); ++s) {
+    if (narrow_[s] != kUnreachable) wide_[s] = narrow_[s];
+  }
+  std::vector<std::uint16_t>().swap(narrow_);
+}
+
 }  // namespace fleet_planner

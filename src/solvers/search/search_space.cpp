@@ -13,21 +13,28 @@ namespace fleet_planner {
 
 namespace {
 
-// Breadth-first from the target over reversed edges. False (and a partial table) if the deadline
-// passed: it is checked every 16384 states, a few hundred microseconds of work.
-bool restrictedDistances(const SearchSpace& space, int a, const Deadline& deadline, std::vector<std::int32_t>& dist) {
+// Breadth-first from the target over reversed edges, straight into the agent's table (2 bytes
+// a state: a table of 4-byte steps, scanned and converted afterwards, moved several times the
+// memory). False (and an empty table) if the deadline passed: it is checked every 16384
+// states, a few hundred microseconds of work. `queue` is scratch.
+bool restrictedDistances(const SearchSpace& space, int a, const Deadline& deadline, DistanceTable& table,
+                         std::vector<StateId>& queue) {
   const StateGraph& g = space.graph(a);
-  dist.assign(g.stateIdCount(), -1);
+  table.reset(static_cast<std::size_t>(g.stateIdCount()));
   const StateId target = space.target(a);
   if (!space.allows(a, target, Action::Wait)) return true;
-  std::vector<StateId> queue{target};
-  dist[target] = 0;
+  queue.assign(1, target);
+  table.set(target, 0);
   for (std::size_t head = 0; head < queue.size(); ++head) {
-    if ((head & 16383) == 16383 && deadline.expired()) return false;
+    if ((head & 16383) == 16383 && deadline.expired()) {
+      table = DistanceTable();
+      return false;
+    }
     const StateId s = queue[head];
+    const int next = table[s] + 1;
     g.forEachPredecessor(s, [&](Action action, StateId prev) {
-      if (dist[prev] < 0 && space.allows(a, prev, action)) {
-        dist[prev] = dist[s] + 1;
+      if (!table.reached(prev) && space.allows(a, prev, action)) {
+        table.set(prev, next);
         queue.push_back(prev);
       }
     });
@@ -138,14 +145,14 @@ SearchSpace::SearchSpace(const Subproblem& problem, bool distances)
   std::atomic<int> next{0};
   std::atomic<bool> expired{false};
   auto worker = [&] {
-    std::vector<std::int32_t> steps;  // one agent's table as the search fills it
+    std::vector<StateId> queue;
     for (int a = next++; a < invalid; a = next++) {
       // One table per agent: on large maps and fleets, seconds.
-      if (expired || problem.deadline.expired() || !restrictedDistances(*this, a, problem.deadline, steps)) {
+      if (expired || problem.deadline.expired() ||
+          !restrictedDistances(*this, a, problem.deadline, distances_[a], queue)) {
         expired = true;
         return;
       }
-      distances_[a].assign(steps);
     }
   };
   const int lanes = std::max(1, std::min(problem.threads, invalid));
@@ -167,10 +174,8 @@ SearchSpace::SearchSpace(const Subproblem& problem, bool distances)
 }
 
 bool SearchSpace::buildDistances(int a, const Deadline& deadline) {
-  std::vector<std::int32_t> steps;
-  if (!restrictedDistances(*this, a, deadline, steps)) return false;
-  distances_[a].assign(steps);
-  return true;
+  std::vector<StateId> queue;
+  return restrictedDistances(*this, a, deadline, distances_[a], queue);
 }
 
 void SearchSpace::makeLookups() {

@@ -14,6 +14,19 @@ class DistanceTable {
  public:
   /// Takes a copy of `steps` (indexed by state id; -1 where the target is unreachable).
   void assign(const std::vector<std::int32_t>& steps);
+  /// Filled by a breadth-first search instead: reset() makes every one of `states` states
+  /// unreachable, set() gives one state its distance, in the search's order (never smaller than
+  /// one given before). Two bytes a state until a distance reaches 65,535, then four.
+  void reset(std::size_t states);
+  void set(StateId s, int steps) {
+    if (!narrow_.empty() && steps < kUnreachable) {
+      narrow_[s] = static_cast<std::uint16_t>(steps);
+      return;
+    }
+    if (!narrow_.empty()) widen();
+    wide_[s] = steps;
+  }
+  bool reached(StateId s) const { return narrow_.empty() ? wide_[s] >= 0 : narrow_[s] != kUnreachable; }
   /// Steps from s to the target; -1 if unreachable.
   int operator[](StateId s) const {
     if (narrow_.empty()) return wide_[s];
@@ -25,6 +38,7 @@ class DistanceTable {
 
  private:
   static constexpr std::uint16_t kUnreachable = 0xFFFF;
+  void widen();
   std::vector<std::uint16_t> narrow_;  // used when every distance is below kUnreachable
   std::vector<std::int32_t> wide_;     // otherwise
 };
