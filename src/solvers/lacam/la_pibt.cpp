@@ -225,6 +225,13 @@ bool LaPibt::assign(int a, const Config& current, Config& next, int pusher, Stat
   } else {
     // Best first by distance to the target; random tie-break from the seed.
     const StateChoices& all = candidates(a, current[a]);
+    if (candidate_distances_[a][0] == 0) {
+      // At its target: waiting ranks first whatever the draws (every other state is a step or
+      // more away), so it waits, unsorted; its draws are still taken, so that the random
+      // stream, and so the search, stay as they were.
+      for (int i = 0; i < all.size(); ++i) rng_.next();
+      return true;
+    }
     struct Ranked {
       int distance;
       std::uint64_t tie;
