@@ -62,4 +62,15 @@ Problem* generatedProblem(const std::string& name, int robots, unsigned seed, st
   }
 }
 
+Subproblem wholeFleet(Problem& p, long long budget) {
+  Subproblem sub;
+  sub.instance = &p.instance;
+  sub.graphs = &p.fleetGraphs();
+  for (std::size_t i = 0; i < p.instance.robots.size(); ++i) sub.robots.push_back(static_cast<int>(i));
+  sub.deadline = Deadline::in(600.0);
+  sub.seed = 1;
+  sub.max_expansions = budget;
+  return sub;
+}
+
 }  // namespace fleet_planner::bench

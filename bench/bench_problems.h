@@ -8,6 +8,7 @@
 #include "fleet_planner/model/fleet_graphs.h"
 #include "fleet_planner/model/grid_map.h"
 #include "fleet_planner/model/instance.h"
+#include "fleet_planner/solvers/solver.h"
 
 namespace fleet_planner::bench {
 
@@ -28,5 +29,9 @@ Problem* problem(const std::string& name, int k, std::string& error);
 /// Map `name` with `robots` robots of the paper's distribution (generateInstance with `seed`,
 /// the CLI's `generate`), cached like problem().
 Problem* generatedProblem(const std::string& name, int robots, unsigned seed, std::string& error);
+
+/// Every robot of `p` as one subproblem (raw), seed 1, a 600 s deadline and `budget` low-level
+/// expansions (-1: none), so that every machine does the same work.
+Subproblem wholeFleet(Problem& p, long long budget);
 
 }  // namespace fleet_planner::bench

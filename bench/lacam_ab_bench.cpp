@@ -30,13 +30,7 @@ void compare(benchmark::State& state, Problem* p, const std::string& error) {
       !registered("la_lacam_ab_new")) {
     return state.SkipWithError("no versions to compare: run scripts/lacam_ab");
   }
-  Subproblem sub;
-  sub.instance = &p->instance;
-  sub.graphs = &p->fleetGraphs();
-  for (std::size_t i = 0; i < p->instance.robots.size(); ++i) sub.robots.push_back(static_cast<int>(i));
-  sub.deadline = Deadline::in(600.0);
-  sub.seed = 1;
-  sub.max_expansions = 20000;
+  const Subproblem sub = wholeFleet(*p, 20000);
   double base_s = 0, new_s = 0;
   long long base_nodes = 0, new_nodes = 0, rounds = 0;
   for (auto _ : state) {

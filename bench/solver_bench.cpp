@@ -21,17 +21,6 @@
 namespace fleet_planner::bench {
 namespace {
 
-Subproblem wholeFleet(Problem& p, long long budget) {
-  Subproblem sub;
-  sub.instance = &p.instance;
-  sub.graphs = &p.fleetGraphs();
-  for (std::size_t i = 0; i < p.instance.robots.size(); ++i) sub.robots.push_back(static_cast<int>(i));
-  sub.deadline = Deadline::in(600.0);
-  sub.seed = 1;
-  sub.max_expansions = budget;
-  return sub;
-}
-
 /// LA-LaCAM for 20,000 configuration steps (one PIBT step each): `configs/s` counts the new
 /// configurations, `steps/s` every step (revisits included).
 void lacamConfigurations(benchmark::State& state, Problem* p, const std::string& error) {
