@@ -70,6 +70,7 @@ TEST(DistanceTable, AFillInSearchOrderGivesWhatACopyGives) {
 }  // namespace fleet_planner
 
 namespace fleet_planner::test {
+namespace {
 
 // With nothing else on the map, a search space's tables are the distances of the robot's own
 // graph to its target (graph_search.h's distancesTo), state by state, around walls.
@@ -95,7 +96,6 @@ TEST(SearchSpaceDistances, TheTablesAreTheGraphsDistances) {
   }
   EXPECT_GT(reached, 100);
 }
-namespace {
 
 // A search space's distance tables are built on several threads: the same tables, and the same
 // problem (the first robot, in order, whose target cannot be reached) as on one.

@@ -9,6 +9,7 @@
 #include "fleet_planner/solvers/search/space_time_astar.h"
 #include "solver_test_util.h"
 #include "test_maps.h"
+#include "test_robots.h"
 
 namespace fleet_planner::test {
 namespace {
@@ -125,6 +126,29 @@ TEST(LaPibt, AGeneratorKeptAcrossConfigurationsGivesTheSameStepsAsANewOne) {
   }
   EXPECT_GT(moves, 1000);
   EXPECT_GT(jumps, 100);
+}
+
+// An agent at its target, not pushed, waits without ranking its candidates, yet takes one
+// random draw per candidate as ranking them would: the random stream, and so every later
+// choice of the search, stays what it was.
+TEST(LaPibt, AnAgentAtItsTargetWaitsAndTakesItsDraws) {
+  for (std::uint64_t seed = 0; seed < 8; ++seed) {
+    const GridPose here{5 + static_cast<int>(seed), 7, static_cast<int>(seed % kHeadings)};
+    const World w(freeMap(20, 20), {dot("parked", here, here)});
+    const SearchSpace space(allRobots(w));
+    LaPibt pibt(space, seed);
+    Config next;
+    ASSERT_TRUE(pibt.generate({space.start(0)}, {}, {0}, next));
+    EXPECT_EQ(next[0], space.start(0));
+    int choices = 1;  // waiting, and every allowed move to a state with a distance
+    space.graph(0).forEachSuccessor(space.start(0), [&](Action action, StateId s) {
+      choices += space.distance(0, s) >= 0 && space.allows(0, space.start(0), action);
+    });
+    EXPECT_GT(choices, 2);
+    Rng expected(seed);
+    for (int i = 0; i < choices; ++i) expected.next();
+    EXPECT_EQ(pibt.rng().next(), expected.next()) << "seed " << seed;
+  }
 }
 
 }  // namespace

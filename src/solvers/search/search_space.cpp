@@ -13,10 +13,10 @@ namespace fleet_planner {
 
 namespace {
 
-// Breadth-first from the target over reversed edges, straight into the agent's table (2 bytes
-// a state: a table of 4-byte steps, scanned and converted afterwards, moved several times the
-// memory). False (and an empty table) if the deadline passed: it is checked every 16384
-// states, a few hundred microseconds of work. `queue` is scratch.
+// Breadth-first from the target over reversed edges, straight into the agent's table (no
+// 4-byte table of the whole map to scan and convert after). False (and an empty table) if the
+// deadline passed: it is checked every 16384 states, a few hundred microseconds of work.
+// `queue` is scratch.
 bool restrictedDistances(const SearchSpace& space, int a, const Deadline& deadline, DistanceTable& table,
                          std::vector<StateId>& queue) {
   const StateGraph& g = space.graph(a);
