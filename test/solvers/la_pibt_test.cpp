@@ -151,5 +151,22 @@ TEST(LaPibt, AnAgentAtItsTargetWaitsAndTakesItsDraws) {
   }
 }
 
+// An agent whose best step is blocked by an agent that has already moved (here: stayed at its
+// target) takes its next best in rank: waiting (as far from its target as now) before turning
+// away (one step farther).
+TEST(LaPibt, AnAgentWhoseBestStepIsBlockedTakesItsNextBest) {
+  for (std::uint64_t seed = 0; seed < 8; ++seed) {
+    const World w(freeMap(20, 20),
+                  {dot("parked", {8, 7, 0}, {8, 7, 0}), dot("behind", {7, 7, 0}, {12, 7, 0})});
+    const SearchSpace space(allRobots(w));
+    LaPibt pibt(space, seed);
+    const Config start = {space.start(0), space.start(1)};
+    Config next;
+    ASSERT_TRUE(pibt.generate(start, {}, {0, 1}, next));
+    EXPECT_EQ(next[0], start[0]);
+    EXPECT_EQ(next[1], start[1]) << "seed " << seed << ": waits rather than turning away";
+  }
+}
+
 }  // namespace
 }  // namespace fleet_planner::test

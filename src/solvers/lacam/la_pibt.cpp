@@ -216,38 +216,11 @@ StateChoices LaPibt::cachedEscape(int a, StateId from, int pusher, StateId pushe
 bool LaPibt::assign(int a, const Config& current, Config& next, int pusher, StateId avoid) {
   assigned_[a] = true;
   next[a] = current[a];
-  StateChoices options;
-  if (pusher >= 0) {
-    // Pushed: step towards the nearest state clear of the cells the pusher will sweep next
-    // step. Large robots without reverse often need a turn first, so progress is enough.
-    const Action action = stepAction(space_.graph(pusher), current[pusher], avoid);
-    options = cachedEscape(a, current[a], pusher, current[pusher], action);
-  } else {
-    // Best first by distance to the target; random tie-break from the seed.
-    const StateChoices& all = candidates(a, current[a]);
-    if (candidate_distances_[a][0] == 0) {
-      // At its target: waiting ranks first whatever the draws (every other state is a step or
-      // more away), so it waits, unsorted; its draws are still taken, so that the random
-      // stream, and so the search, stay as they were.
-      for (int i = 0; i < all.size(); ++i) rng_.next();
-      return true;
-    }
-    struct Ranked {
-      int distance;
-      std::uint64_t tie;
-      int index;
-    };
-    std::array<Ranked, kActions> ranked;
-    for (int i = 0; i < all.size(); ++i) ranked[i] = {candidate_distances_[a][i], rng_.next(), i};
-    sortFew(ranked, all.size(), [](const Ranked& x, const Ranked& y) {
-      return x.distance != y.distance ? x.distance < y.distance : x.tie < y.tie;
-    });
-    for (int i = 0; i < all.size(); ++i) options.push(all[ranked[i].index], all.action(ranked[i].index));
-  }
-  for (int i = 0; i < options.size(); ++i) {
-    const StateId s = options[i];
-    const Action action = options.action(i);
-    if (action == Action::Wait) return pusher < 0;  // waiting is the best it can do
+  // One candidate step: a moves there, or waits (for the agents in its way to clear it, or
+  // because waiting is the best it can do), or tries its next candidate.
+  enum class Outcome { Moves, Waits, Next };
+  auto attempt = [&](StateId s, Action action) {
+    if (action == Action::Wait) return Outcome::Waits;
     // The agents in a's way are appended to in_way_ after `mark`; pushes nested in this one
     // append after them and take theirs off again before they return.
     const std::size_t mark = in_way_.size();
@@ -256,20 +229,65 @@ bool LaPibt::assign(int a, const Config& current, Config& next, int pusher, Stat
       next[a] = s;
       const GridPose p = space_.graph(a).pose(current[a]);
       claim(a, space_.cells(a).swept(p.heading, action), p);
-      return true;
+      return Outcome::Moves;
     }
     // Blocked: if only agents still to move are in the way, ask them to clear, and wait.
     const std::size_t end = in_way_.size();
-    if (end == mark) continue;
+    if (end == mark) return Outcome::Next;
     bool cleared = true;
     for (std::size_t k = mark; k < end; ++k) {
       const int b = in_way_[k];
       if (!assigned_[b]) cleared = assign(b, current, next, a, s) && cleared;
     }
     in_way_.resize(mark);
-    if (cleared) return pusher < 0;  // a waits; the way to s opens next step
+    return cleared ? Outcome::Waits : Outcome::Next;
+  };
+  if (pusher >= 0) {
+    // Pushed: step towards the nearest state clear of the cells the pusher will sweep next
+    // step. Large robots without reverse often need a turn first, so progress is enough.
+    const Action action = stepAction(space_.graph(pusher), current[pusher], avoid);
+    const StateChoices options = cachedEscape(a, current[a], pusher, current[pusher], action);
+    for (int i = 0; i < options.size(); ++i) {
+      const Outcome o = attempt(options[i], options.action(i));
+      if (o == Outcome::Moves) return true;
+      if (o == Outcome::Waits) return false;
+    }
+    return false;
   }
-  return pusher < 0;
+  // Best first by distance to the target; random tie-break from the seed.
+  const StateChoices& all = candidates(a, current[a]);
+  if (candidate_distances_[a][0] == 0) {
+    // At its target: waiting ranks first whatever the draws (every other state is a step or
+    // more away), so it waits, unsorted; its draws are still taken, so that the random
+    // stream, and so the search, stay as they were.
+    for (int i = 0; i < all.size(); ++i) rng_.next();
+    return true;
+  }
+  struct Ranked {
+    int distance;
+    std::uint64_t tie;
+    int index;
+  };
+  auto before = [](const Ranked& x, const Ranked& y) {
+    return x.distance != y.distance ? x.distance < y.distance : x.tie < y.tie;
+  };
+  std::array<Ranked, kActions> ranked;
+  int best = 0;
+  for (int i = 0; i < all.size(); ++i) {
+    ranked[i] = {candidate_distances_[a][i], rng_.next(), i};
+    if (before(ranked[i], ranked[best])) best = i;
+  }
+  // Most agents take their best candidate (or wait): the others are ranked only when it is
+  // blocked, in the order a stable sort of all of them would give after it.
+  const Outcome first = attempt(all[best], all.action(best));
+  if (first != Outcome::Next) return true;
+  std::copy(ranked.begin() + best + 1, ranked.begin() + all.size(), ranked.begin() + best);
+  const int rest = all.size() - 1;
+  sortFew(ranked, rest, before);
+  for (int i = 0; i < rest; ++i) {
+    if (attempt(all[ranked[i].index], all.action(ranked[i].index)) != Outcome::Next) return true;
+  }
+  return true;
 }
 
 bool LaPibt::generate(const Config& current, const std::vector<std::pair<int, StateId>>& fixed,
