@@ -35,9 +35,38 @@ LaPibt::LaPibt(const SearchSpace& space, std::uint64_t seed, bool remember_escap
   // The cells fits() reads: the contact probe of each sweep (it meets every body or sweep that
   // the sweep meets) without the mover's own footprint, which no other claim covers. Agents
   // with the same cells share them.
+  model_ = space.graph(0).actionModel();
   std::unordered_map<const FootprintCells*, std::shared_ptr<const Ahead>> made;
+  std::unordered_map<const FootprintCells*, std::shared_ptr<const BodySteps>> made_steps;
   ahead_.resize(space.numAgents());
+  body_steps_.resize(space.numAgents());
   for (int a = 0; a < space.numAgents(); ++a) {
+    std::shared_ptr<const BodySteps>& steps = made_steps[&space.cells(a)];
+    if (!steps) {
+      auto fresh = std::make_shared<BodySteps>();
+      for (int h = 0; h < kHeadings; ++h) {
+        const CellSet& before = space.cells(a).body(h);
+        for (int act = 1; act < kActions; ++act) {
+          const GridPose q = applyAction({0, 0, h}, static_cast<Action>(act), model_);
+          const CellSet& after = space.cells(a).body(q.heading);
+          std::vector<Cell> leaves, enters;
+          for (const Cell& c : before.cells()) {
+            if (!after.contains(c.x - q.x, c.y - q.y)) leaves.push_back(c);
+          }
+          for (const Cell& c : after.cells()) {
+            if (!before.contains(c.x + q.x, c.y + q.y)) enters.push_back({c.x + q.x, c.y + q.y});
+          }
+          std::vector<Cell> sweeps;
+          for (const Cell& c : space.cells(a).swept(h, static_cast<Action>(act)).cells()) {
+            if (!before.contains(c.x, c.y)) sweeps.push_back(c);
+          }
+          (*fresh)[h][act] = {CellSet::fromCells(std::move(leaves)), CellSet::fromCells(std::move(enters)),
+                              CellSet::fromCells(std::move(sweeps))};
+        }
+      }
+      steps = std::move(fresh);
+    }
+    body_steps_[a] = steps;
     std::shared_ptr<const Ahead>& sets = made[&space.cells(a)];
     if (!sets) {
       auto fresh = std::make_shared<Ahead>();
@@ -65,6 +94,12 @@ void LaPibt::claim(int a, const CellSet& set, const GridPose& p) {
   forEachMapCell(set, {p.x, p.y}, width_, height_, [&](std::size_t cell) { moving_[cell] = tag; });
 }
 
+void LaPibt::claimMotion(int a, const GridPose& p, Action action) {
+  // The footprint's own cells name a already (standing_), and no other claim takes them this
+  // step: a motion's claim is its sweep.
+  claim(a, (*body_steps_[a])[p.heading][static_cast<int>(action)].sweeps, p);
+}
+
 void LaPibt::claimFootprints(const Config& current) {
   if (++step_ == 0) {  // wrapped: forget every claim
     std::fill(moving_.begin(), moving_.end(), 0);
@@ -75,18 +110,36 @@ void LaPibt::claimFootprints(const Config& current) {
   for (int b = 0; b < space_.numAgents(); ++b) {
     if (placed_[b] == current[b]) continue;
     const StateGraph& g = space_.graph(b);
+    const GridPose q = g.pose(current[b]);
     if (placed_[b] != kNoState) {
       const GridPose old = g.pose(placed_[b]);
+      const int act = oneStep(old, q);
+      if (act > 0) {  // one step on: only the cells that change
+        const BodyStep& changed = (*body_steps_[b])[old.heading][act];
+        forEachMapCell(changed.leaves, {old.x, old.y}, width_, height_, [&](std::size_t cell) {
+          if (standing_[cell] == b) standing_[cell] = -1;
+        });
+        forEachMapCell(changed.enters, {old.x, old.y}, width_, height_,
+                       [&](std::size_t cell) { standing_[cell] = b; });
+        placed_[b] = current[b];
+        continue;
+      }
       forEachMapCell(space_.cells(b).body(old.heading), {old.x, old.y}, width_, height_,
                      [&](std::size_t cell) {
                        if (standing_[cell] == b) standing_[cell] = -1;
                      });
     }
-    const GridPose q = g.pose(current[b]);
     forEachMapCell(space_.cells(b).body(q.heading), {q.x, q.y}, width_, height_,
                    [&](std::size_t cell) { standing_[cell] = b; });
     placed_[b] = current[b];
   }
+}
+
+int LaPibt::oneStep(const GridPose& from, const GridPose& to) const {
+  for (int act = 1; act < kActions; ++act) {
+    if (applyAction(from, static_cast<Action>(act), model_) == to) return act;
+  }
+  return -1;
 }
 
 const StateChoices& LaPibt::candidates(int a, StateId s) {
@@ -227,8 +280,7 @@ bool LaPibt::assign(int a, const Config& current, Config& next, int pusher, Stat
     if (fits(a, current[a], action, &in_way_)) {
       in_way_.resize(mark);
       next[a] = s;
-      const GridPose p = space_.graph(a).pose(current[a]);
-      claim(a, space_.cells(a).swept(p.heading, action), p);
+      claimMotion(a, space_.graph(a).pose(current[a]), action);
       return Outcome::Moves;
     }
     // Blocked: if only agents still to move are in the way, ask them to clear, and wait.
@@ -300,8 +352,7 @@ bool LaPibt::generate(const Config& current, const std::vector<std::pair<int, St
     const Action action = stepAction(space_.graph(a), current[a], s);
     if (assigned_[a] || !fits(a, current[a], action)) return false;
     next[a] = s;
-    const GridPose p = space_.graph(a).pose(current[a]);
-    claim(a, space_.cells(a).swept(p.heading, action), p);
+    if (action != Action::Wait) claimMotion(a, space_.graph(a).pose(current[a]), action);
     assigned_[a] = true;
   }
   for (int a : order) {

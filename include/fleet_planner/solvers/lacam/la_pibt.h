@@ -91,11 +91,11 @@ class LaPibt {
   const SearchSpace& space_;
   Rng rng_;
   // What each map cell is claimed by this step: the sweep of an assigned agent's motion
-  // (moving_, as (step_ << 32) | agent; an entry of an earlier step is nobody's), else the
-  // footprint of the agent standing there in the configuration (standing_, -1: none). Claims
-  // never overlap (a motion is taken only where it fits, and every action sweeps the mover's
-  // footprint), so a cell has one owner, and fits() reads the cells of one sweep instead of
-  // comparing agents.
+  // outside its footprint (moving_, as (step_ << 32) | agent; an entry of an earlier step is
+  // nobody's), else the footprint of the agent standing there in the configuration (standing_,
+  // -1: none), which every action of that agent sweeps. Claims never overlap (a motion is taken
+  // only where it fits), so a cell has one owner, and fits() reads the cells of one sweep
+  // instead of comparing agents.
   int width_ = 0, height_ = 0;
   std::vector<std::uint64_t> moving_;
   std::uint32_t step_ = 0;
@@ -108,6 +108,21 @@ class LaPibt {
   // Per agent, heading and action: the cells fits() reads (see the constructor).
   using Ahead = std::array<std::array<CellSet, kActions>, kHeadings>;
   std::vector<std::shared_ptr<const Ahead>> ahead_;
+  // Per agent, heading and action: the cells its footprint leaves and the cells it enters,
+  // relative to the pose before the action, so that claimFootprints moves a footprint one step
+  // by the cells that change (most of a large body stays where it was); and the cells of the
+  // action's sweep outside that footprint, which are all that a motion claims (the footprint's
+  // cells already name the agent).
+  struct BodyStep {
+    CellSet leaves, enters, sweeps;
+  };
+  // Claims agent a's motion `action` from p: its sweep.
+  void claimMotion(int a, const GridPose& p, Action action);
+  using BodySteps = std::array<std::array<BodyStep, kActions>, kHeadings>;
+  std::vector<std::shared_ptr<const BodySteps>> body_steps_;
+  // The action taking `from` to `to` in one step of the agents' action model, -1 if none.
+  int oneStep(const GridPose& from, const GridPose& to) const;
+  ActionModel model_;
   mutable std::vector<std::uint32_t> seen_agent_;  // dedup of fits()' agents in the way
   mutable std::uint32_t agent_query_ = 0;
   // escapeSteps' scratch: the breadth-first queue and the stamps of the states it has seen.
