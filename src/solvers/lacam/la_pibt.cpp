@@ -35,7 +35,10 @@ LaPibt::LaPibt(const SearchSpace& space, std::uint64_t seed, bool remember_escap
   // The cells fits() reads: the contact probe of each sweep (it meets every body or sweep that
   // the sweep meets) without the mover's own footprint, which no other claim covers. Agents
   // with the same cells share them.
-  model_ = space.graph(0).actionModel();
+  const ActionModel model = space.graph(0).actionModel();
+  for (int h = 0; h < kHeadings; ++h) {
+    for (int act = 0; act < kActions; ++act) step_to_[h][act] = applyAction({0, 0, h}, static_cast<Action>(act), model);
+  }
   std::unordered_map<const FootprintCells*, std::shared_ptr<const Ahead>> made;
   std::unordered_map<const FootprintCells*, std::shared_ptr<const BodySteps>> made_steps;
   ahead_.resize(space.numAgents());
@@ -47,7 +50,7 @@ LaPibt::LaPibt(const SearchSpace& space, std::uint64_t seed, bool remember_escap
       for (int h = 0; h < kHeadings; ++h) {
         const CellSet& before = space.cells(a).body(h);
         for (int act = 1; act < kActions; ++act) {
-          const GridPose q = applyAction({0, 0, h}, static_cast<Action>(act), model_);
+          const GridPose q = step_to_[h][act];
           const CellSet& after = space.cells(a).body(q.heading);
           std::vector<Cell> leaves, enters;
           for (const Cell& c : before.cells()) {
@@ -136,8 +139,9 @@ void LaPibt::claimFootprints(const Config& current) {
 }
 
 int LaPibt::oneStep(const GridPose& from, const GridPose& to) const {
+  const GridPose d{to.x - from.x, to.y - from.y, to.heading};
   for (int act = 1; act < kActions; ++act) {
-    if (applyAction(from, static_cast<Action>(act), model_) == to) return act;
+    if (step_to_[from.heading][act] == d) return act;
   }
   return -1;
 }

@@ -122,7 +122,8 @@ class LaPibt {
   std::vector<std::shared_ptr<const BodySteps>> body_steps_;
   // The action taking `from` to `to` in one step of the agents' action model, -1 if none.
   int oneStep(const GridPose& from, const GridPose& to) const;
-  ActionModel model_;
+  // Per heading and action: the pose the action leads to from (0, 0) at that heading.
+  std::array<std::array<GridPose, kActions>, kHeadings> step_to_{};
   mutable std::vector<std::uint32_t> seen_agent_;  // dedup of fits()' agents in the way
   mutable std::uint32_t agent_query_ = 0;
   // escapeSteps' scratch: the breadth-first queue and the stamps of the states it has seen.
