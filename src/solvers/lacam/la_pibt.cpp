@@ -18,6 +18,16 @@ void sortFew(Array& items, int n, Less less) {
   }
 }
 
+// The cells of `set` placed at `at` that `other` placed at `other_at` does not cover.
+CellSet outside(const CellSet& set, Cell at, const CellSet& other, Cell other_at) {
+  std::vector<Cell> cells;
+  for (const Cell& c : set.cells()) {
+    const Cell p{c.x + at.x, c.y + at.y};
+    if (!other.contains(p.x - other_at.x, p.y - other_at.y)) cells.push_back(p);
+  }
+  return CellSet::fromCells(std::move(cells));
+}
+
 }  // namespace
 
 LaPibt::LaPibt(const SearchSpace& space, std::uint64_t seed, bool remember_escapes)
@@ -32,60 +42,42 @@ LaPibt::LaPibt(const SearchSpace& space, std::uint64_t seed, bool remember_escap
   if (space.numAgents() == 0) return;
   width_ = space.graph(0).width();
   height_ = space.graph(0).height();
-  // The cells fits() reads: the contact probe of each sweep (it meets every body or sweep that
-  // the sweep meets) without the mover's own footprint, which no other claim covers. Agents
-  // with the same cells share them.
   const ActionModel model = space.graph(0).actionModel();
   for (int h = 0; h < kHeadings; ++h) {
-    for (int act = 0; act < kActions; ++act) step_to_[h][act] = applyAction({0, 0, h}, static_cast<Action>(act), model);
+    for (int act = 0; act < kActions; ++act) {
+      step_to_[h][act] = applyAction({0, 0, h}, static_cast<Action>(act), model);
+    }
   }
-  std::unordered_map<const FootprintCells*, std::shared_ptr<const Ahead>> made;
-  std::unordered_map<const FootprintCells*, std::shared_ptr<const BodySteps>> made_steps;
+  // Per footprint (agents with the same cells share them), heading and action: the cells
+  // fits() reads, the contact probe of the sweep (it meets every body or sweep that the sweep
+  // meets) without the mover's own footprint, which no other claim covers; and the cells of
+  // its BodyStep.
+  using Tables = std::pair<std::shared_ptr<const Ahead>, std::shared_ptr<const BodySteps>>;
+  std::unordered_map<const FootprintCells*, Tables> made;
   ahead_.resize(space.numAgents());
   body_steps_.resize(space.numAgents());
   for (int a = 0; a < space.numAgents(); ++a) {
-    std::shared_ptr<const BodySteps>& steps = made_steps[&space.cells(a)];
-    if (!steps) {
-      auto fresh = std::make_shared<BodySteps>();
+    auto& [sets, steps] = made[&space.cells(a)];
+    if (!sets) {
+      auto ahead = std::make_shared<Ahead>();
+      auto body_steps = std::make_shared<BodySteps>();
       for (int h = 0; h < kHeadings; ++h) {
         const CellSet& before = space.cells(a).body(h);
-        for (int act = 1; act < kActions; ++act) {
+        for (int act = 0; act < kActions; ++act) {
+          const Action action = static_cast<Action>(act);
+          (*ahead)[h][act] = outside(space.probe(a, h, action), {0, 0}, before, {0, 0});
           const GridPose q = step_to_[h][act];
           const CellSet& after = space.cells(a).body(q.heading);
-          std::vector<Cell> leaves, enters;
-          for (const Cell& c : before.cells()) {
-            if (!after.contains(c.x - q.x, c.y - q.y)) leaves.push_back(c);
-          }
-          for (const Cell& c : after.cells()) {
-            if (!before.contains(c.x + q.x, c.y + q.y)) enters.push_back({c.x + q.x, c.y + q.y});
-          }
-          std::vector<Cell> sweeps;
-          for (const Cell& c : space.cells(a).swept(h, static_cast<Action>(act)).cells()) {
-            if (!before.contains(c.x, c.y)) sweeps.push_back(c);
-          }
-          (*fresh)[h][act] = {CellSet::fromCells(std::move(leaves)), CellSet::fromCells(std::move(enters)),
-                              CellSet::fromCells(std::move(sweeps))};
+          (*body_steps)[h][act] = {outside(before, {0, 0}, after, {q.x, q.y}),
+                                   outside(after, {q.x, q.y}, before, {0, 0}),
+                                   outside(space.cells(a).swept(h, action), {0, 0}, before, {0, 0})};
         }
       }
-      steps = std::move(fresh);
-    }
-    body_steps_[a] = steps;
-    std::shared_ptr<const Ahead>& sets = made[&space.cells(a)];
-    if (!sets) {
-      auto fresh = std::make_shared<Ahead>();
-      for (int h = 0; h < kHeadings; ++h) {
-        const CellSet& body = space.cells(a).body(h);
-        for (int act = 0; act < kActions; ++act) {
-          std::vector<Cell> cells;
-          for (const Cell& c : space.probe(a, h, static_cast<Action>(act)).cells()) {
-            if (!body.contains(c.x, c.y)) cells.push_back(c);
-          }
-          (*fresh)[h][act] = CellSet::fromCells(std::move(cells));
-        }
-      }
-      sets = std::move(fresh);
+      sets = std::move(ahead);
+      steps = std::move(body_steps);
     }
     ahead_[a] = sets;
+    body_steps_[a] = steps;
   }
   moving_.assign(static_cast<std::size_t>(width_) * height_, 0);
   standing_.assign(moving_.size(), -1);
