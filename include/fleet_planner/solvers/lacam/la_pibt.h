@@ -69,6 +69,8 @@ class LaPibt {
  private:
   // Marks the cells of `set` at pose p as claimed by agent a this step.
   void claim(int a, const CellSet& set, const GridPose& p);
+  // Claims agent a's motion `action` from p: its sweep.
+  void claimMotion(int a, const GridPose& p, Action action);
   // Starts a step: every agent claims its current footprint (moved from the last step's).
   void claimFootprints(const Config& current);
   // a doing `action` from `from` meets no agent's claim: the sweep of an assigned agent's
@@ -116,8 +118,6 @@ class LaPibt {
   struct BodyStep {
     CellSet leaves, enters, sweeps;
   };
-  // Claims agent a's motion `action` from p: its sweep.
-  void claimMotion(int a, const GridPose& p, Action action);
   using BodySteps = std::array<std::array<BodyStep, kActions>, kHeadings>;
   std::vector<std::shared_ptr<const BodySteps>> body_steps_;
   // The action taking `from` to `to` in one step of the agents' action model, -1 if none.
