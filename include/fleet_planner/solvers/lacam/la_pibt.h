@@ -120,7 +120,10 @@ class LaPibt {
   };
   using BodySteps = std::array<std::array<BodyStep, kActions>, kHeadings>;
   std::vector<std::shared_ptr<const BodySteps>> body_steps_;
-  // The action taking `from` to `to` in one step of the agents' action model, -1 if none.
+  // The action taking `from` to `to` in one whole step of the agents' action model, -1 if
+  // none. Not actionBetween (action.h): that one also takes the shorter moves of lattice
+  // connections, for which the body steps' cells do not hold, and it is called across
+  // translation units on the hot path of every configuration.
   int oneStep(const GridPose& from, const GridPose& to) const;
   // Per heading and action: the pose the action leads to from (0, 0) at that heading.
   std::array<std::array<GridPose, kActions>, kHeadings> step_to_{};
