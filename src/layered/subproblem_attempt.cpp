@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "fleet_planner/layered/plan_merge.h"
+#include "fleet_planner/model/plan.h"
 #include "fleet_planner/solvers/registry.h"
 #include "solving.h"
 
@@ -10,11 +11,19 @@ namespace fleet_planner {
 
 namespace {
 
-// A subproblem's statistics count every attempt at it.
+// A subproblem's statistics count every attempt at it; a lower bound proven by any holds.
 void addEarlierAttempt(SolveStats& stats, const SolveStats& earlier) {
   stats.time_s += earlier.time_s;
   stats.low_level_expansions += earlier.low_level_expansions;
   stats.high_level_nodes += earlier.high_level_nodes;
+  stats.lower_bound = std::max(stats.lower_bound, earlier.lower_bound);
+}
+
+// The sum of the paths' costs (each to its last arrival at its final pose).
+long long costOf(const SolveResult& r) {
+  long long cost = 0;
+  for (const Path& p : r.paths) cost += p.empty() ? 0 : pathCost(p, p.back());
+  return cost;
 }
 
 }  // namespace
@@ -79,21 +88,27 @@ void Solving::solveOne(std::size_t k) {
   SolveResult solved = std::move(first.result);
   bool delayed = first.delayed;
   // The fallback backend, in the rest of the share, for what the backend failed to solve, by
-  // the same protocol.
+  // the same protocol; and for a plan the backend had in hand when its limit stopped it, whose
+  // cost proves nothing: the cheaper of the two plans is kept.
   bool by_fallback = false;
-  if (has_fallback && !solved.success() && solved.status != SolveStatus::Infeasible &&
+  if (has_fallback && (!solved.success() || solved.stopped_early) && solved.status != SolveStatus::Infeasible &&
       !share_deadline.expired()) {
     Subproblem again = sub;
     again.deadline = share_deadline;
     SolveAttempt second = solveByBackend(options_.fallback, again);
     addEarlierAttempt(second.result.stats, solved.stats);
-    if (!second.result.success()) {
-      second.result.reason = options_.backend + ": " + solved.reason + "; " + options_.fallback +
-                             ": " + second.result.reason;
+    const bool keep_first = solved.success() && (!second.result.success() || costOf(solved) <= costOf(second.result));
+    if (keep_first) {
+      solved.stats = second.result.stats;
+    } else {
+      if (!second.result.success()) {
+        second.result.reason = options_.backend + ": " + solved.reason + "; " + options_.fallback +
+                               ": " + second.result.reason;
+      }
+      by_fallback = second.result.success();
+      delayed = second.delayed;
+      solved = std::move(second.result);
     }
-    by_fallback = second.result.success();
-    delayed = second.delayed;
-    solved = std::move(second.result);
   }
   SolvedSubproblem& s = order_[k];
   s.delayed_in_cluster = delayed;

@@ -24,6 +24,7 @@ void LaCbs::configure(const BackendOptionValues& values) {
   bind.number("max_memory_mb", o.max_memory_mb, 1, 1e7);
   bind.number("suboptimality", o.suboptimality, 1, 10);
   bind.flag("around_others", o.around_others);
+  bind.flag("anytime", o.anytime);
   bind.finish();
   options_ = o;
 }

@@ -90,6 +90,9 @@ struct SolveStats {
   long long high_level_nodes = 0;
   long long low_level_expansions = 0;
   double peak_memory_mb = -1.0;  ///< the search's own estimate; -1 if unknown
+  /// A proven lower bound on the sum of costs (in steps) of the subproblem's robots in any plan
+  /// without conflicts among them (LA-CBS's constraint tree); -1 if the backend proves none.
+  long long lower_bound = -1;
 };
 
 struct SolveResult {
@@ -100,6 +103,10 @@ struct SolveResult {
   /// On failure, the robots it is about (instance indices), most suspect first: a group proven
   /// unable to reach its targets, or the robots of the colliding pairs left. May be empty.
   std::vector<int> culprits;
+  /// On success: the plan a search had in hand when a limit stopped it (LA-CBS's `anytime`),
+  /// valid but not the search's own answer (not proven optimal); a caller with another backend
+  /// may try that one and keep the cheaper plan.
+  bool stopped_early = false;
   bool success() const { return status == SolveStatus::Success; }
 };
 

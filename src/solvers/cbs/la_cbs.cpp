@@ -68,7 +68,20 @@ class CbsSearch {
         max_nodes_(max_nodes), max_expansions_(max_expansions) {}
 
   SolveResult run() {
-    SolveResult result;
+    SolveResult r = search();
+    stats_.lower_bound = lower_bound_;
+    // Anytime: stopped by a limit with a conflict-free plan in hand, that plan is the answer; the
+    // tree's lower bound (in the statistics) says how far from the optimum it can be.
+    if (r.status == SolveStatus::Timeout && options_.anytime && incumbent_) {
+      r = success(*incumbent_);
+      r.stopped_early = true;
+      r.reason = "stopped before proving the optimum: the cheapest plan found costs " +
+                 std::to_string(incumbent_cost_) + ", any plan at least " + std::to_string(lower_bound_);
+    }
+    return r;
+  }
+
+  SolveResult search() {
     CtNode root;
     std::vector<StatePath> paths(n_);
     std::vector<int> bounds(n_, 0);
@@ -237,11 +250,12 @@ class CbsSearch {
 
   bool focal() const { return options_.suboptimality > 1.0; }
 
-  // ECBS's primal step (path_around_others.h): when every conflict in `current` is between one
-  // pair not tried before, each of the two planned around everybody else's paths; a
-  // conflict-free plan cheaper than the incumbent becomes the incumbent.
+  // ECBS's primal step (path_around_others.h), also of an anytime search: when every conflict
+  // in `current` is between one pair not tried before, each of the two planned around everybody
+  // else's paths; a conflict-free plan cheaper than the incumbent becomes the incumbent.
   void tryAroundOthers(const std::vector<StatePath>& current) {
-    if (!focal() || !options_.around_others || active_.size() < static_cast<std::size_t>(n_)) return;
+    if ((!focal() && !options_.anytime) || !options_.around_others || active_.size() < static_cast<std::size_t>(n_))
+      return;
     const std::vector<std::pair<int, int>> pairs = conflictingPairs(space_, current);
     if (pairs.size() != 1 || !tried_pairs_.insert(pairs[0]).second) return;
     for (const int a : {pairs[0].first, pairs[0].second}) {
@@ -265,6 +279,7 @@ class CbsSearch {
   }
   static LaCbsOptions optimal(LaCbsOptions o) {
     o.suboptimality = 1.0;
+    o.anytime = false;
     return o;
   }
 

@@ -67,11 +67,16 @@ struct LaCbsOptions {
   /// bound, the one with fewest conflicts. The plan costs at most w times the optimum; the
   /// pairwise delay heuristic bounds the robots' lower bounds instead of their costs. 1: optimal.
   double suboptimality = 1.0;
-  /// With suboptimality above 1: where every conflict of the node being expanded is between the
-  /// same two agents (first time for that pair), each is planned around all other paths
-  /// (path_around_others.h); the cheapest such conflict-free plan is returned once it costs at
-  /// most the weight times the least lower bound.
+  /// With suboptimality above 1 or `anytime`: where every conflict of the node being expanded is
+  /// between the same two agents (first time for that pair), each is planned around all other
+  /// paths (path_around_others.h); the cheapest such conflict-free plan is returned once it
+  /// costs at most the weight times the least lower bound.
   bool around_others = true;
+  /// Stopped by the time limit or a node, expansion or memory limit, the search returns the
+  /// cheapest conflict-free plan it has found (by the primal step above) instead of TIMEOUT,
+  /// with the reason saying so; SolveStats::lower_bound bounds the optimum from below either
+  /// way. A search that ends on its own is unchanged: optimal at weight 1.
+  bool anytime = true;
 };
 
 class LaCbs : public Solver {
