@@ -89,6 +89,8 @@ def solve_one(args, run, folder):
         "--seed", str(seed), "--threads", str(args.threads), "--out", plan]
     # Always named: the CLI's own default (the node's, la_lns) would otherwise apply.
     argv += ["--fallback", fallback or "none"]
+    for param in args.backend_param:
+        argv += ["--backend-param", param]
     if method == "layered":
         argv += ["--steps", steps]
     timeout = args.time_limit + args.grace
@@ -340,6 +342,8 @@ def parse_args(argv):
                    help="also N instances per K from `fleet_planner_cli generate`, seeds 1..N; K may exceed the pool "
                         "(default: 0)")
     p.add_argument("--threads", type=int, default=2, help="CLI --threads (default: 2)")
+    p.add_argument("--backend-param", action="append", default=[], metavar="BACKEND.NAME=VALUE",
+                   help="CLI --backend-param for every solve (repeatable), e.g. la_cbs.suboptimality=1.2")
     p.add_argument("--sweep-tolerance", type=float, default=0.0,
                    help="CLI --sweep-tolerance: cells a turn may clip beyond its end poses (default: 0, exact; "
                         "0.2 makes every instance of the pools feasible but den520d K=140, see docs/benchmarking.md)")

@@ -252,11 +252,20 @@ class CbsSearch {
 
   // ECBS's primal step (path_around_others.h), also of an anytime search: when every conflict
   // in `current` is between one pair not tried before, each of the two planned around everybody
-  // else's paths; a conflict-free plan cheaper than the incumbent becomes the incumbent.
+  // else's paths; at weight 1, when the conflicts are of fewer pairs than at any node before, the
+  // conflicting agents planned around the others in turn (a focal tree finds plans without
+  // conflicts itself, and its slower searches leave no time for these). Each plan so made is
+  // offered as the incumbent.
   void tryAroundOthers(const std::vector<StatePath>& current) {
     if ((!focal() && !options_.anytime) || !options_.around_others || active_.size() < static_cast<std::size_t>(n_))
       return;
     const std::vector<std::pair<int, int>> pairs = conflictingPairs(space_, current);
+    if (!focal() && pairs.size() > 1 && pairs.size() < fewest_pairs_) {
+      fewest_pairs_ = pairs.size();
+      offer(aroundOthersInTurn(space_, current, problem_.deadline, options_.max_low_level_nodes,
+                               stats_.low_level_expansions));
+      return;
+    }
     if (pairs.size() != 1 || !tried_pairs_.insert(pairs[0]).second) return;
     for (const int a : {pairs[0].first, pairs[0].second}) {
       const LowLevelResult r = pathAroundOthers(space_, a, current, problem_.deadline, options_.max_low_level_nodes);
@@ -264,12 +273,17 @@ class CbsSearch {
       if (r.outcome != LowLevelResult::Outcome::Found) continue;
       std::vector<StatePath> plan = current;
       plan[a] = r.path;
-      long long cost = 0;
-      for (const int b : active_) cost += pathCost(plan[b]);
-      if ((incumbent_ && cost >= incumbent_cost_) || countConflicts(space_, plan) > 0) continue;
-      incumbent_ = std::move(plan);
-      incumbent_cost_ = cost;
+      offer(std::move(plan));
     }
+  }
+  // A plan (none if empty) becomes the incumbent if it has no conflict and costs less.
+  void offer(std::vector<StatePath> plan) {
+    if (plan.empty()) return;
+    long long cost = 0;
+    for (const int b : active_) cost += pathCost(plan[b]);
+    if ((incumbent_ && cost >= incumbent_cost_) || countConflicts(space_, plan) > 0) return;
+    incumbent_ = std::move(plan);
+    incumbent_cost_ = cost;
   }
   // The incumbent costs at most the weight times the least lower bound: within the weight of
   // the optimum.
@@ -406,6 +420,7 @@ class CbsSearch {
   std::set<std::pair<int, int>> tried_pairs_;       // planned around the others (primal step)
   std::optional<std::vector<StatePath>> incumbent_;  // the cheapest conflict-free plan so far
   long long incumbent_cost_ = 0;
+  std::size_t fewest_pairs_ = std::numeric_limits<std::size_t>::max();  // at the last repair in turn
 };
 
 }  // namespace

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "fleet_planner/solvers/search/agent_conflicts.h"
+#include "fleet_planner/solvers/cbs/cbs_split.h"
 #include "fleet_planner/solvers/search/agent_constraints.h"
 
 namespace fleet_planner {
@@ -28,6 +29,27 @@ LowLevelResult pathAroundOthers(const SearchSpace& space, int a, const std::vect
   o.blocked = [&others](StateId s, Action act, int t) { return others.conflicts(s, act, t) > 0; };
   o.blocked_until = horizon;
   return spaceTimeAStar(space, a, constraints, deadline, o);
+}
+
+std::vector<StatePath> aroundOthersInTurn(const SearchSpace& space, std::vector<StatePath> paths,
+                                          const Deadline& deadline, long long max_nodes, long long& expansions) {
+  for (;;) {
+    const std::vector<std::pair<int, int>> pairs = conflictingPairs(space, paths);
+    if (pairs.empty()) return paths;
+    StatePath best;
+    int best_agent = -1;
+    for (const int a : {pairs[0].first, pairs[0].second}) {
+      LowLevelResult r = pathAroundOthers(space, a, paths, deadline, max_nodes);
+      expansions += r.expansions;
+      if (r.outcome != LowLevelResult::Outcome::Found) continue;
+      if (best_agent < 0 || pathCost(r.path) - pathCost(paths[a]) < pathCost(best) - pathCost(paths[best_agent])) {
+        best = std::move(r.path);
+        best_agent = a;
+      }
+    }
+    if (best_agent < 0) return {};
+    paths[best_agent] = std::move(best);
+  }
 }
 
 }  // namespace fleet_planner

@@ -20,4 +20,12 @@ namespace fleet_planner {
 LowLevelResult pathAroundOthers(const SearchSpace& space, int a, const std::vector<StatePath>& paths,
                                 const Deadline& deadline, long long max_nodes);
 
+/// `paths` made free of conflicts by planning agents around all the others in turn (each by
+/// pathAroundOthers): of the first conflicting pair, the one whose path around the others adds
+/// fewer steps to its own. That agent then meets nobody, so the agents in conflict fall by at
+/// least one a turn. Empty if neither agent of a pair has such a path. The searches' expansions
+/// are added to `expansions`.
+std::vector<StatePath> aroundOthersInTurn(const SearchSpace& space, std::vector<StatePath> paths,
+                                          const Deadline& deadline, long long max_nodes, long long& expansions);
+
 }  // namespace fleet_planner
