@@ -14,6 +14,18 @@
 namespace fleet_planner::test {
 namespace {
 
+// Each agent's shortest path alone (an empty path for agents before `first`); false if one of
+// them has none.
+bool pathsAlone(const SearchSpace& space, const Subproblem& sub, int first, std::vector<StatePath>& paths) {
+  paths.assign(space.numAgents(), {});
+  for (int a = first; a < space.numAgents(); ++a) {
+    const LowLevelResult r = spaceTimeAStar(space, a, {}, sub.deadline);
+    if (r.outcome != LowLevelResult::Outcome::Found) return false;
+    paths[a] = r.path;
+  }
+  return true;
+}
+
 TEST(PathAroundOthers, PlansWithTheOthersPathsPassTheValidator) {
   Rng rng(7);
   int found = 0, waited = 0;
@@ -21,14 +33,8 @@ TEST(PathAroundOthers, PlansWithTheOthersPathsPassTheValidator) {
     const std::unique_ptr<World> w = randomTinyWorld(rng, round % 3 == 0 ? 3 : 2);
     const Subproblem sub = allRobots(*w);
     const SearchSpace space(sub);
-    std::vector<StatePath> paths(space.numAgents());
-    bool alone = true;
-    for (int a = 1; a < space.numAgents() && alone; ++a) {
-      const LowLevelResult r = spaceTimeAStar(space, a, {}, sub.deadline);
-      alone = r.outcome == LowLevelResult::Outcome::Found;
-      paths[a] = r.path;
-    }
-    if (!alone || countConflicts(space, paths) > 0) continue;  // the others must not meet
+    std::vector<StatePath> paths;
+    if (!pathsAlone(space, sub, 1, paths) || countConflicts(space, paths) > 0) continue;  // the others must not meet
     const LowLevelResult mine = pathAroundOthers(space, 0, paths, sub.deadline, 1'000'000);
     if (mine.outcome != LowLevelResult::Outcome::Found) continue;
     const LowLevelResult free = spaceTimeAStar(space, 0, {}, sub.deadline);
@@ -79,14 +85,8 @@ TEST(PathAroundOthers, InTurnGivesPlansThatPassTheValidator) {
     const std::unique_ptr<World> w = randomTinyWorld(rng, 3);
     const Subproblem sub = allRobots(*w);
     const SearchSpace space(sub);
-    std::vector<StatePath> alone(space.numAgents());
-    bool reachable = true;
-    for (int a = 0; a < space.numAgents() && reachable; ++a) {
-      const LowLevelResult r = spaceTimeAStar(space, a, {}, sub.deadline);
-      reachable = r.outcome == LowLevelResult::Outcome::Found;
-      alone[a] = r.path;
-    }
-    if (!reachable || countConflicts(space, alone) == 0) continue;
+    std::vector<StatePath> alone;
+    if (!pathsAlone(space, sub, 0, alone) || countConflicts(space, alone) == 0) continue;
     ++met;
     long long expansions = 0;
     const std::vector<StatePath> paths = aroundOthersInTurn(space, alone, sub.deadline, 1'000'000, expansions);

@@ -2,8 +2,8 @@
 
 #include <algorithm>
 
-#include "fleet_planner/solvers/search/agent_conflicts.h"
 #include "fleet_planner/solvers/cbs/cbs_split.h"
+#include "fleet_planner/solvers/search/agent_conflicts.h"
 #include "fleet_planner/solvers/search/agent_constraints.h"
 
 namespace fleet_planner {

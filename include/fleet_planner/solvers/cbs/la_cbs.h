@@ -67,10 +67,12 @@ struct LaCbsOptions {
   /// bound, the one with fewest conflicts. The plan costs at most w times the optimum; the
   /// pairwise delay heuristic bounds the robots' lower bounds instead of their costs. 1: optimal.
   double suboptimality = 1.0;
-  /// With suboptimality above 1 or `anytime`: where every conflict of the node being expanded is
-  /// between the same two agents (first time for that pair), each is planned around all other
-  /// paths (path_around_others.h); the cheapest such conflict-free plan is returned once it
-  /// costs at most the weight times the least lower bound.
+  /// With suboptimality above 1 or `anytime`, the primal step: where every conflict of the node
+  /// being expanded is between the same two agents (first time for that pair), each is planned
+  /// around all other paths (path_around_others.h); at weight 1 also, at each node whose
+  /// conflicts are of fewer pairs than at any node before, the conflicting agents are planned
+  /// around the others in turn. The cheapest such conflict-free plan is returned once it costs
+  /// at most the weight times the least lower bound (or at a limit, with `anytime`).
   bool around_others = true;
   /// Stopped by the time limit or a node, expansion or memory limit, the search returns the
   /// cheapest conflict-free plan it has found (by the primal step above) instead of TIMEOUT,
