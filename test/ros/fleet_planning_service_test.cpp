@@ -85,7 +85,15 @@ TEST_F(PlanningServiceTest, PlansAValidFleetPlanWithEachBackendAndMode) {
         EXPECT_EQ(call.response.subproblems.size(), 1u);
       }
       std::size_t robots_in_subproblems = 0;
-      for (const auto& s : call.response.subproblems) robots_in_subproblems += s.robot_ids.size();
+      for (const auto& s : call.response.subproblems) {
+        robots_in_subproblems += s.robot_ids.size();
+        // LA-CBS proves a lower bound on each subproblem's cost (its optimum here), LA-LaCAM none.
+        if (std::string(backend) == "la_cbs") {
+          EXPECT_GE(s.lower_bound, 0);
+        } else {
+          EXPECT_EQ(s.lower_bound, -1);
+        }
+      }
       EXPECT_EQ(robots_in_subproblems, 3u);
       EXPECT_EQ(call.placements.size(), 3u);
     }
