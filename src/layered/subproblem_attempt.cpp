@@ -113,6 +113,7 @@ void Solving::solveOne(std::size_t k) {
   SolvedSubproblem& s = order_[k];
   s.delayed_in_cluster = delayed;
   s.by_fallback = by_fallback;
+  s.stopped_early = solved.success() && solved.stopped_early;
   s.status = solved.status;
   s.reason = solved.reason;
   s.time_s = solved.stats.time_s;

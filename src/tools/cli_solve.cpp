@@ -27,7 +27,8 @@ nlohmann::json subproblemDetails(const Instance& instance, const LayeredResult& 
     list.push_back({{"robots", ids}, {"cluster", s.cluster}, {"level", s.level}, {"status", statusName(s.status)},
                     {"time_s", s.time_s}, {"delay", s.delay}, {"high_level_nodes", s.stats.high_level_nodes},
                     {"low_level_expansions", s.stats.low_level_expansions},
-                    {"lower_bound", s.stats.lower_bound}, {"by_fallback", s.by_fallback},
+                    {"lower_bound", s.stats.lower_bound}, {"stopped_early", s.stopped_early},
+                    {"by_fallback", s.by_fallback},
                     {"stepping_aside", aside}});
   }
   return list;

@@ -61,6 +61,9 @@ struct SolvedSubproblem {
   /// The backend failed (not INFEASIBLE) within the first part of its time share, and the
   /// fallback backend solved it in the rest.
   bool by_fallback = false;
+  /// Its plan is one the backend had in hand when its limit stopped it (LA-CBS's `anytime`; the
+  /// fallback's, if any, was not cheaper): where the deadline cut in, not the search's own end.
+  bool stopped_early = false;
   /// Robots of other subproblems planned with it, from and back to where they stand, after it
   /// failed with them as obstacles (step_aside.h); their paths follow its robots' in the result.
   std::vector<int> stepping_aside;
