@@ -28,7 +28,11 @@ std::vector<StatePath> jointRepair(const SearchSpace& space, const Subproblem& p
   sub.deadline = problem.deadline.within(seconds);
   sub.seed = seed;
   sub.max_expansions = max_expansions;
-  const SolveResult r = LaCbs().solve(sub);
+  // Not anytime: a repair within a budget of expansions whose outcome must not depend on the
+  // machine's speed (the primal step's searches run until their node limit or the deadline).
+  LaCbsOptions options;
+  options.anytime = false;
+  const SolveResult r = LaCbs(options).solve(sub);
   expansions += r.stats.low_level_expansions;
   if (!r.success()) return {};
   return toStatePaths(space, group, r.paths);
