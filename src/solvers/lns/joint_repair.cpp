@@ -28,8 +28,9 @@ std::vector<StatePath> jointRepair(const SearchSpace& space, const Subproblem& p
   sub.deadline = problem.deadline.within(seconds);
   sub.seed = seed;
   sub.max_expansions = max_expansions;
-  // Not anytime: a repair within a budget of expansions whose outcome must not depend on the
-  // machine's speed (the primal step's searches run until their node limit or the deadline).
+  // Not anytime: the repair wants a conflict-free group plan within its small budget, and the
+  // primal step's searches would spend that budget; with them on, the sweep's plans were the
+  // same (session 68), so the repair stays the LA-CBS it was.
   LaCbsOptions options;
   options.anytime = false;
   const SolveResult r = LaCbs(options).solve(sub);
