@@ -71,7 +71,7 @@ bool same(const AgentConflict& x, const AgentConflict& y) {
          x.cell.y == y.cell.y;
 }
 
-// The four queries of agent_conflicts.h against everyConflict() on `paths`; the number of
+// The five queries of agent_conflicts.h against everyConflict() on `paths`; the number of
 // conflicts found.
 int checkQueries(const SearchSpace& space, const std::vector<StatePath>& paths,
                  const std::string& where) {
@@ -93,6 +93,9 @@ int checkQueries(const SearchSpace& space, const std::vector<StatePath>& paths,
     EXPECT_TRUE(same(got[k], earliest[k])) << where << ", pair " << k;
   std::sort(pairs.begin(), pairs.end());
   EXPECT_EQ(conflictingPairs(space, paths), pairs) << where;
+  const ConflictTally tally = tallyConflicts(space, paths);
+  EXPECT_EQ(tally.conflicts, static_cast<int>(all.size())) << where;
+  EXPECT_EQ(tally.pairs, pairs) << where;
   return static_cast<int>(all.size());
 }
 

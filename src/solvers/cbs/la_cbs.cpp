@@ -2,13 +2,10 @@
 #include "fleet_planner/solvers/cbs/la_cbs.h"
 
 #include <algorithm>
-#include <chrono>
 #include <limits>
 #include <optional>
-#include <queue>
 #include <set>
 
-#include "fleet_planner/runtime/errors.h"
 #include "fleet_planner/solvers/search/agent_conflicts.h"
 #include "fleet_planner/solvers/cbs/cbs_split.h"
 #include "fleet_planner/solvers/cbs/pairwise_delay.h"
@@ -35,6 +32,8 @@ struct CtNode {
   // A lower bound on any plan below: bound_sum + the pairwise delay heuristic.
   long long f = 0;
   int conflicts = 0;
+  int pairs = 0;  // agent pairs with a conflict
+  void count(const ConflictTally& t) { conflicts = t.conflicts; pairs = static_cast<int>(t.pairs.size()); }
 };
 
 // A split evaluated before choosing: its children (one per feasible branch) and how many of its
@@ -98,8 +97,9 @@ class CbsSearch {
       root.paths.emplace_back(a, paths[a]);
       root.path_bounds.push_back(bounds[a]);
     }
-    root.conflicts = countConflicts(space_, paths);
-    if (!boundNode(root, paths, bounds)) return stopped();
+    const ConflictTally tally = tallyConflicts(space_, paths);
+    root.count(tally);
+    if (!boundNode(root, tally.pairs, bounds)) return stopped();
     push(std::move(root));
 
     for (;;) {
@@ -123,7 +123,7 @@ class CbsSearch {
           if (!focal()) lower_bound_ = nodes_[id].cost;
           return success(current);
         }
-        tryAroundOthers(current);
+        tryAroundOthers(current, nodes_[id].pairs);
         if (incumbentGoodEnough()) return success(*incumbent_);
         if (problem_.deadline.expired()) return stopped();
         const AgentConflict& first = earliest.front();
@@ -200,14 +200,16 @@ class CbsSearch {
       // More constraints: the agent's bound cannot fall below the node's.
       const int child_bound = std::max(bounds[agent], ll.lower_bound);
       child.bound_sum = nodes_[id].bound_sum - bounds[agent] + child_bound;
-      child.conflicts = countConflicts(space_, current);
+      const ConflictTally tally = tallyConflicts(space_, current);
+      child.count(tally);
       child.f = nodes_[id].f;  // a subtree of the node's: its bound holds
       std::vector<int> child_bounds = bounds;
       child_bounds[agent] = child_bound;
-      if (!boundNode(child, current, child_bounds)) return Outcome::Expired;
+      if (!boundNode(child, tally.pairs, child_bounds)) return Outcome::Expired;
       if (options_.bypass && child.cost == nodes_[id].cost && child.conflicts < nodes_[id].conflicts) {
         replacePath(nodes_[id], agent, ll.path, bounds[agent]);  // the node's bound still holds
         nodes_[id].conflicts = child.conflicts;
+        nodes_[id].pairs = child.pairs;
         return Outcome::Adopted;
       }
       current[agent] = std::move(old);
@@ -220,14 +222,14 @@ class CbsSearch {
   }
 
   // Raises node.f to the agents' lower bounds (`bounds`: their costs unless focal) plus the
-  // pairwise delay heuristic on them, first bounding the pairs that conflict in `paths` (the
-  // node's) and have no bound yet; the pairs' searches are optimal. The heuristic holds on lower
-  // bounds as on costs: agents that together need B cost at least B in any plan below.
+  // pairwise delay heuristic on them, first bounding the pairs that conflict in the node's paths
+  // (`conflicting`) and have no bound yet; the pairs' searches are optimal. The heuristic holds
+  // on lower bounds as on costs: agents that together need B cost at least B in any plan below.
   // False if the deadline came.
-  bool boundNode(CtNode& node, const std::vector<StatePath>& paths, const std::vector<int>& bounds) {
+  bool boundNode(CtNode& node, const std::vector<std::pair<int, int>>& conflicting, const std::vector<int>& bounds) {
     node.f = std::max(node.f, node.bound_sum);
     if (!pairs_) return true;
-    for (const auto& [i, j] : conflictingPairs(space_, paths)) {
+    for (const auto& [i, j] : conflicting) {
       if (pairs_->known(i, j)) continue;
       // The pair bounds may spend as many low-level expansions as the tree itself, plus a base.
       const long long allowance = stats_.low_level_expansions - 2 * pair_expansions_ +
@@ -255,18 +257,19 @@ class CbsSearch {
   // else's paths; at weight 1, when the conflicts are of fewer pairs than at any node before, the
   // conflicting agents planned around the others in turn (a focal tree finds plans without
   // conflicts itself, and its slower searches leave no time for these). Each plan so made is
-  // offered as the incumbent.
-  void tryAroundOthers(const std::vector<StatePath>& current) {
+  // offered as the incumbent. `pair_count`: the number of conflicting pairs in `current`.
+  void tryAroundOthers(const std::vector<StatePath>& current, int pair_count) {
     if ((!focal() && !options_.anytime) || !options_.around_others || active_.size() < static_cast<std::size_t>(n_))
       return;
-    const std::vector<std::pair<int, int>> pairs = conflictingPairs(space_, current);
-    if (!focal() && pairs.size() > 1 && pairs.size() < fewest_pairs_) {
-      fewest_pairs_ = pairs.size();
+    if (!focal() && pair_count > 1 && pair_count < fewest_pairs_) {
+      fewest_pairs_ = pair_count;
       offer(aroundOthersInTurn(space_, current, problem_.deadline, options_.max_low_level_nodes,
                                stats_.low_level_expansions));
       return;
     }
-    if (pairs.size() != 1 || !tried_pairs_.insert(pairs[0]).second) return;
+    if (pair_count != 1) return;
+    const std::vector<std::pair<int, int>> pairs = conflictingPairs(space_, current);
+    if (!tried_pairs_.insert(pairs[0]).second) return;
     for (const int a : {pairs[0].first, pairs[0].second}) {
       const LowLevelResult r = pathAroundOthers(space_, a, current, problem_.deadline, options_.max_low_level_nodes);
       stats_.low_level_expansions += r.expansions;
@@ -420,7 +423,7 @@ class CbsSearch {
   std::set<std::pair<int, int>> tried_pairs_;       // planned around the others (primal step)
   std::optional<std::vector<StatePath>> incumbent_;  // the cheapest conflict-free plan so far
   long long incumbent_cost_ = 0;
-  std::size_t fewest_pairs_ = std::numeric_limits<std::size_t>::max();  // at the last repair in turn
+  int fewest_pairs_ = std::numeric_limits<int>::max();  // at the last repair in turn
 };
 
 }  // namespace

@@ -132,17 +132,22 @@ std::vector<AgentConflict> earliestConflictPerPair(const SearchSpace& space, con
 }
 
 std::vector<std::pair<int, int>> conflictingPairs(const SearchSpace& space, const std::vector<StatePath>& paths) {
+  return tallyConflicts(space, paths).pairs;
+}
+
+ConflictTally tallyConflicts(const SearchSpace& space, const std::vector<StatePath>& paths) {
   const std::size_t n = paths.size();
   std::vector<bool> seen(n * n, false);
-  std::vector<std::pair<int, int>> pairs;
+  ConflictTally tally;
   forEachConflict(space, paths, [&](const AgentConflict& c) {
+    ++tally.conflicts;
     const std::size_t pair = static_cast<std::size_t>(c.a) * n + static_cast<std::size_t>(c.b);
-    if (!seen[pair]) pairs.emplace_back(c.a, c.b);
+    if (!seen[pair]) tally.pairs.emplace_back(c.a, c.b);
     seen[pair] = true;
     return false;
   });
-  std::sort(pairs.begin(), pairs.end());
-  return pairs;
+  std::sort(tally.pairs.begin(), tally.pairs.end());
+  return tally;
 }
 
 int countConflicts(const SearchSpace& space, const std::vector<StatePath>& paths) {

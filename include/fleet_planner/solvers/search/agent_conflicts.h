@@ -42,6 +42,13 @@ std::vector<AgentConflict> earliestConflictPerPair(const SearchSpace& space, con
 /// The agent pairs (a < b) with at least one conflict, sorted.
 std::vector<std::pair<int, int>> conflictingPairs(const SearchSpace& space, const std::vector<StatePath>& paths);
 
+/// countConflicts() and conflictingPairs() in one pass over the conflicts.
+struct ConflictTally {
+  int conflicts = 0;
+  std::vector<std::pair<int, int>> pairs;
+};
+ConflictTally tallyConflicts(const SearchSpace& space, const std::vector<StatePath>& paths);
+
 /// Number of (pair, step) with a vertex or transfer conflict.
 int countConflicts(const SearchSpace& space, const std::vector<StatePath>& paths);
 
