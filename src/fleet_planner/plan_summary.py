@@ -43,6 +43,9 @@ def format_summary(response, status_names, robot_status_names):
         lines.append("  #%d  cluster %d  level %d  %s  %.3f s  delay %d  robots: %s" % (
             sub.index, sub.cluster, sub.level, sub.status or "-", sub.solve_time, sub.delay,
             ", ".join(sub.robot_ids)))
+        if getattr(sub, "stopped_early", False):  # LA-CBS at its limit: the best plan it had
+            lines.append("      stopped at its limit: not proven optimal, any plan costs at least %d steps"
+                         % sub.lower_bound)
     s = response.statistics
     lines.append("statistics:")
     lines.append("  robots %d, subproblems %d, largest subproblem %d"

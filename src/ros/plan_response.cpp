@@ -109,6 +109,7 @@ void fillResponse(const Instance& instance, const GridMap& grid, const PlanningR
     info.solve_time = sub.time_s;
     info.delay = sub.delay;
     info.lower_bound = sub.stats.lower_bound;
+    info.stopped_early = sub.stopped_early;
     largest = std::max(largest, static_cast<int>(sub.robots.size()));
     res.subproblems.push_back(std::move(info));
   }

@@ -21,6 +21,7 @@ void LaCbs::configure(const BackendOptionValues& values) {
   bind.integer("pairwise_delay_expansions", o.pairwise_delay_expansions, 0, kMaxCount);
   bind.integer("max_low_level_nodes", o.max_low_level_nodes, 1, kMaxCount);
   bind.integer("conflict_aware_nodes", o.conflict_aware_nodes, 0, kMaxCount);
+  bind.integer("max_high_level_nodes", o.max_high_level_nodes, -1, kMaxCount);
   bind.number("max_memory_mb", o.max_memory_mb, 1, 1e7);
   bind.number("suboptimality", o.suboptimality, 1, 10);
   bind.flag("around_others", o.around_others);

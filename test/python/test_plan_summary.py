@@ -51,6 +51,18 @@ class Summary(unittest.TestCase):
             "  SOC 30 steps, makespan - (no plan)",
         ])
 
+    def test_a_plan_stopped_at_its_limit_shows_its_bound(self):
+        response = S(status=0, message="", robots=[], timelines=[],
+                     subproblems=[S(index=0, cluster=0, level=0, robot_ids=["a"], status="SUCCESS",
+                                    solve_time=1.0, delay=0, lower_bound=63, stopped_early=True),
+                                  S(index=1, cluster=0, level=1, robot_ids=["b"], status="SUCCESS",
+                                    solve_time=1.0, delay=0, lower_bound=9, stopped_early=False)],
+                     statistics=S(robots=2, precompute_time=0, decomposition_time=0, solve_time=0,
+                                  total_time=0, soc=74, makespan=40, subproblems=2, largest_subproblem=1))
+        lines = format_summary(response, {}, {}).splitlines()
+        self.assertEqual(lines[4], "      stopped at its limit: not proven optimal, any plan costs at least 63 steps")
+        self.assertTrue(lines[5].startswith("  #1  cluster 0  level 1"))
+
     def test_unknown_status_numbers_are_shown(self):
         response = S(status=7, message="", robots=[], timelines=[], subproblems=[],
                      statistics=S(robots=0, precompute_time=0, decomposition_time=0,
