@@ -57,7 +57,7 @@ class LacamSearch {
       // Farther agents first; the fraction keeps the order among equals deterministic.
       priority[a] = static_cast<float>(space_.distance(a, start[a])) / static_cast<float>(1 + maxDistance(start));
     }
-    addNode(start, -1, priority);
+    addNode(start, hashOf(start.data()), -1, priority);
     std::vector<int> open{0};
 
     std::vector<std::pair<int, StateId>> fixed;
@@ -94,7 +94,8 @@ class LacamSearch {
       order_.assign(orders_.row(id), orders_.row(id) + n_);
       if (!pibt_.generate(current, fixed, order_, next)) continue;
 
-      const int known = find(next);
+      const std::size_t hash = hashOf(next.data());
+      const int known = find(next, hash);
       if (known >= 0) {
         // Revisit: continue that node's remaining constraints; now and then (seeded) go back to
         // the start instead, so that a dead end's large subtree does not hold the search
@@ -106,7 +107,7 @@ class LacamSearch {
       p.assign(priorities_.row(id), priorities_.row(id) + n_);
       // PIBT's priorities: agents away from their target gain one per step; arrived ones drop back.
       for (int a = 0; a < n_; ++a) p[a] = next[a] == goal[a] ? p[a] - static_cast<float>(static_cast<int>(p[a])) : p[a] + 1;
-      open.push_back(addNode(next, id, p));
+      open.push_back(addNode(next, hash, id, p));
     }
     return failure(SolveStatus::Infeasible, "every reachable configuration explored: no conflict-free plan");
   }
@@ -124,12 +125,15 @@ class LacamSearch {
     return h;
   }
 
-  // Open addressing over node ids: one allocation however many configurations.
-  int find(const Config& c) const {
+  // Open addressing over node ids: one allocation however many configurations. Each node's
+  // hash is kept (hashes_), so that a probe compares configurations only when the hashes match
+  // and growing the table reads no configuration.
+  int find(const Config& c, std::size_t hash) const {
     const std::size_t mask = table_.size() - 1;
-    for (std::size_t i = hashOf(c.data()) & mask;; i = (i + 1) & mask) {
-      if (table_[i] < 0) return -1;
-      if (std::equal(c.begin(), c.end(), configOf(table_[i]))) return table_[i];
+    for (std::size_t i = hash & mask;; i = (i + 1) & mask) {
+      const int id = table_[i];
+      if (id < 0) return -1;
+      if (hashes_[id] == hash && std::equal(c.begin(), c.end(), configOf(id))) return id;
     }
   }
 
@@ -146,7 +150,7 @@ class LacamSearch {
 
   void place(int id) {
     const std::size_t mask = table_.size() - 1;
-    std::size_t i = hashOf(configOf(id)) & mask;
+    std::size_t i = hashes_[id] & mask;
     while (table_[i] >= 0) i = (i + 1) & mask;
     table_[i] = id;
   }
@@ -157,9 +161,10 @@ class LacamSearch {
     return m;
   }
 
-  int addNode(const Config& config, int parent, const std::vector<float>& priority) {
+  int addNode(const Config& config, std::size_t hash, int parent, const std::vector<float>& priority) {
     const int id = static_cast<int>(nodes_.size());
     std::copy(config.begin(), config.end(), configs_.append());
+    hashes_.push_back(hash);
     std::copy(priority.begin(), priority.end(), priorities_.append());
     // Agents by priority, highest first, ties by agent: sorted by insertion from the parent's
     // order, which the new priorities mostly keep.
@@ -211,7 +216,8 @@ class LacamSearch {
   // (counted at twice their size for vector growth).
   double memoryMb() const {
     const double flat = configs_.bytes() + orders_.bytes() + priorities_.bytes();
-    const double nodes = static_cast<double>(nodes_.capacity()) * sizeof(HighNode) + table_.size() * sizeof(int);
+    const double nodes = static_cast<double>(nodes_.capacity()) * sizeof(HighNode) + table_.size() * sizeof(int) +
+                         static_cast<double>(hashes_.capacity()) * sizeof(std::size_t);
     return (flat + nodes + 2.0 * static_cast<double>(live_low_) * sizeof(LowNode)) / 1048576.0;
   }
 
@@ -243,6 +249,7 @@ class LacamSearch {
   std::vector<int> order_;        // scratch: an agent order
   std::vector<float> priority_;   // scratch: a node's priorities
   std::vector<int> table_;
+  std::vector<std::size_t> hashes_;  // per node: hashOf its configuration
   long long live_low_ = 0;
   bool out_of_memory_ = false;
   SolveStats stats_;
