@@ -119,10 +119,15 @@ class LacamSearch {
  private:
   const StateId* configOf(int id) const { return configs_.row(static_cast<std::size_t>(id)); }
 
+  // FNV-1a in four independent lanes (agents a, a + 4, ...), combined at the end: a quarter of
+  // the single chain's multiplications in a row.
   std::size_t hashOf(const StateId* c) const {
-    std::size_t h = 1469598103934665603ULL;
-    for (int a = 0; a < n_; ++a) h = (h ^ static_cast<std::size_t>(static_cast<std::uint32_t>(c[a]))) * 1099511628211ULL;
-    return h;
+    std::size_t h[4] = {1469598103934665603ULL, 0x9e3779b97f4a7c15ULL, 0xbf58476d1ce4e5b9ULL, 0x94d049bb133111ebULL};
+    for (int a = 0; a < n_; ++a) {
+      std::size_t& lane = h[a & 3];
+      lane = (lane ^ static_cast<std::size_t>(static_cast<std::uint32_t>(c[a]))) * 1099511628211ULL;
+    }
+    return ((h[0] * 31 + h[1]) * 31 + h[2]) * 31 + h[3];
   }
 
   // Open addressing over node ids: one allocation however many configurations. Each node's

@@ -37,7 +37,7 @@ LaPibt::LaPibt(const SearchSpace& space, std::uint64_t seed, bool remember_escap
       candidates_at_(space.numAgents(), kNoState),
       candidates_(space.numAgents()),
       candidate_distances_(space.numAgents()),
-      assigned_(space.numAgents()),
+      assigned_(space.numAgents(), 0),
       remember_escapes_(remember_escapes) {
   if (space.numAgents() == 0) return;
   width_ = space.graph(0).width();
@@ -262,8 +262,8 @@ StateChoices LaPibt::cachedEscape(int a, StateId from, int pusher, StateId pushe
   return steps;
 }
 
-bool LaPibt::assign(int a, const Config& current, Config& next, int pusher, StateId avoid) {
-  assigned_[a] = true;
+bool LaPibt::assign(int a, const Config& current, Config& next, int pusher, Action pushing) {
+  assigned_[a] = 1;
   next[a] = current[a];
   // One candidate step: a moves there, or waits (for the agents in its way to clear it, or
   // because waiting is the best it can do), or tries its next candidate.
@@ -285,7 +285,7 @@ bool LaPibt::assign(int a, const Config& current, Config& next, int pusher, Stat
     bool cleared = true;
     for (std::size_t k = mark; k < end; ++k) {
       const int b = in_way_[k];
-      if (!assigned_[b]) cleared = assign(b, current, next, a, s) && cleared;
+      if (!assigned_[b]) cleared = assign(b, current, next, a, action) && cleared;
     }
     in_way_.resize(mark);
     return cleared ? Outcome::Waits : Outcome::Next;
@@ -293,8 +293,7 @@ bool LaPibt::assign(int a, const Config& current, Config& next, int pusher, Stat
   if (pusher >= 0) {
     // Pushed: step towards the nearest state clear of the cells the pusher will sweep next
     // step. Large robots without reverse often need a turn first, so progress is enough.
-    const Action action = stepAction(space_.graph(pusher), current[pusher], avoid);
-    const StateChoices options = cachedEscape(a, current[a], pusher, current[pusher], action);
+    const StateChoices options = cachedEscape(a, current[a], pusher, current[pusher], pushing);
     for (int i = 0; i < options.size(); ++i) {
       const Outcome o = attempt(options[i], options.action(i));
       if (o == Outcome::Moves) return true;
@@ -342,17 +341,17 @@ bool LaPibt::generate(const Config& current, const std::vector<std::pair<int, St
                       const std::vector<int>& order, Config& next) {
   const int n = space_.numAgents();
   next.assign(n, kNoState);
-  std::fill(assigned_.begin(), assigned_.end(), false);
+  std::fill(assigned_.begin(), assigned_.end(), 0);
   claimFootprints(current);
   for (const auto& [a, s] : fixed) {
     const Action action = stepAction(space_.graph(a), current[a], s);
     if (assigned_[a] || !fits(a, current[a], action)) return false;
     next[a] = s;
     if (action != Action::Wait) claimMotion(a, space_.graph(a).pose(current[a]), action);
-    assigned_[a] = true;
+    assigned_[a] = 1;
   }
   for (int a : order) {
-    if (!assigned_[a]) assign(a, current, next, -1, kNoState);
+    if (!assigned_[a]) assign(a, current, next, -1, Action::Wait);
   }
   return true;
 }

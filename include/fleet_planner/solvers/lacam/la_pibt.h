@@ -77,10 +77,10 @@ class LaPibt {
   // motion, the current footprint of the others. With `in_way`, the agents still to move that
   // it meets, in agent order, appended to it.
   bool fits(int a, StateId from, Action action, std::vector<int>* in_way = nullptr) const;
-  // Assigns agent a (and, through pushes, agents blocking it). `avoid`: the state the pusher
-  // wants next (kNoState: none), `pusher` its agent; a must end clear of the pusher's sweep to
-  // it. Returns false if a could not.
-  bool assign(int a, const Config& current, Config& next, int pusher, StateId avoid);
+  // Assigns agent a (and, through pushes, agents blocking it). `pusher`: the agent whose motion
+  // `pushing` (from where it stands) a blocks (-1: none); a must end clear of that motion's
+  // sweep. Returns false if a could not.
+  bool assign(int a, const Config& current, Config& next, int pusher, Action pushing);
   // First steps of a's shortest escapes (within kEscapeDepth steps and kEscapeStates states) to a state whose footprint
   // is clear of `sweep` at `origin`, best first.
   StateChoices escapeSteps(int a, StateId from, const CellSet& sweep, Cell origin) const;
@@ -151,7 +151,7 @@ class LaPibt {
   std::vector<StateId> candidates_at_;       // per agent: the state of candidates_[a]
   std::vector<StateChoices> candidates_;     // per agent: its candidates() at candidates_at_[a]
   std::vector<std::array<int, kActions>> candidate_distances_;  // and their distances to target
-  std::vector<bool> assigned_;  // assigned, or being assigned (then counted as waiting)
+  std::vector<char> assigned_;  // assigned, or being assigned (then counted as waiting)
   std::vector<int> in_way_;     // assign()'s agents in the way, a stack shared by nested pushes
   bool remember_escapes_;
 };
