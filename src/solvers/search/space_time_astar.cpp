@@ -1,6 +1,7 @@
 #include "fleet_planner/solvers/search/space_time_astar.h"
 
 #include <algorithm>
+#include <limits>
 #include <memory>
 
 #include "fleet_planner/solvers/search/focal_list.h"
@@ -109,10 +110,11 @@ struct NodeF {
 };
 using Focal = FocalList<Node, ByF, ByConflicts, NodeF>;
 
-// The open list. At weight 1 a heap of the order's keys, copied out of the nodes: a comparison
-// reads the heap's own entries instead of two nodes at random places of the node vector (the
-// heap's sifting is a fifth to a quarter of a constraint tree's time). The order is ByF's, a
-// total order, so the nodes come out as from FocalList.
+// The open list. At weight 1 a heap per f value of the order's keys, copied out of the nodes: a
+// comparison reads the heap's own entries instead of two nodes at random places of the node
+// vector, and a push or pop sifts only among the nodes of its f (the heap's sifting was a
+// quarter of a constraint tree's time). The order is ByF's, a total order, so the nodes come
+// out as from FocalList.
 class Frontier {
  public:
   Frontier(const std::vector<Node>& nodes, double weight) : nodes_(nodes), weight_(weight), focal_(nodes, weight) {}
@@ -120,29 +122,40 @@ class Frontier {
   void push(int i) {
     if (weight_ > 1.0) return focal_.push(i);
     const Node& n = nodes_[i];
-    heap_.push_back({n.f, n.conflicts, n.g, i});
-    std::push_heap(heap_.begin(), heap_.end(), Worse{});
+    if (buckets_.empty()) base_ = n.f;
+    if (n.f < base_) {  // below every f so far (not with a consistent heuristic): room in front
+      buckets_.insert(buckets_.begin(), static_cast<std::size_t>(base_ - n.f), {});
+      base_ = n.f;
+    }
+    const auto k = static_cast<std::size_t>(n.f - base_);
+    if (k >= buckets_.size()) buckets_.resize(k + 1);
+    buckets_[k].push_back({n.conflicts, n.g, i});
+    std::push_heap(buckets_[k].begin(), buckets_[k].end(), Worse{});
+    lowest_ = std::min(lowest_, k);
+    ++size_;
   }
   /// The next node, or -1; `dead` as FocalList::pop (at weight 1 the caller skips those).
   template <class Dead>
   int pop(Dead dead) {
     if (weight_ > 1.0) return focal_.pop(dead);
-    if (heap_.empty()) return -1;
-    std::pop_heap(heap_.begin(), heap_.end(), Worse{});
-    const Entry e = heap_.back();
-    heap_.pop_back();
-    least_f_ = e.f;
-    return e.index;
+    if (size_ == 0) return -1;
+    while (buckets_[lowest_].empty()) ++lowest_;
+    least_f_ = base_ + static_cast<int>(lowest_);
+    std::vector<Entry>& bucket = buckets_[lowest_];
+    std::pop_heap(bucket.begin(), bucket.end(), Worse{});
+    const int index = bucket.back().index;
+    bucket.pop_back();
+    --size_;
+    return index;
   }
   long long leastF() const { return weight_ > 1.0 ? focal_.leastF() : least_f_; }
 
  private:
   struct Entry {
-    int f, conflicts, g, index;
+    int conflicts, g, index;
   };
-  struct Worse {  // ByF on the copied keys
+  struct Worse {  // ByF on the copied keys, among nodes of one f
     bool operator()(const Entry& a, const Entry& b) const {
-      if (a.f != b.f) return a.f > b.f;
       if (a.conflicts != b.conflicts) return a.conflicts > b.conflicts;
       if (a.g != b.g) return a.g < b.g;
       return a.index > b.index;
@@ -151,8 +164,11 @@ class Frontier {
   const std::vector<Node>& nodes_;
   double weight_;
   Focal focal_;
-  std::vector<Entry> heap_;
-  long long least_f_ = 0;
+  std::vector<std::vector<Entry>> buckets_;  // by f - base_
+  int base_ = 0;                             // the least f pushed
+  std::size_t lowest_ = std::numeric_limits<std::size_t>::max();  // no bucket below holds a node
+  std::size_t size_ = 0;
+  int least_f_ = 0;  // f of the last node popped
 };
 
 }  // namespace
