@@ -139,6 +139,13 @@ TEST(LayeredFallback, FallbackIsDelayedAroundTheChainLikeTheBackend) {
 
 class LayeredBackends : public ::testing::TestWithParam<std::string> {};
 
+// Some subproblem's plan is the one its search had when its limit stopped it (LA-CBS's
+// anytime answer): a plan that depends on where the deadline cut in.
+bool stoppedEarly(const LayeredResult& r) {
+  return std::any_of(r.subproblems.begin(), r.subproblems.end(),
+                     [](const SolvedSubproblem& s) { return s.stopped_early; });
+}
+
 // 500 seeded random instances per backend (1000 plans in all): every returned plan is valid,
 // and on every tenth seed a second run gives the same plan. Instances are only individually
 // solvable (as the paper's generator makes them), so some are jointly unsolvable or too hard
@@ -147,13 +154,6 @@ class LayeredBackends : public ::testing::TestWithParam<std::string> {};
 // rerun is compared only when it solved the same subproblems: a subproblem whose time share ran
 // out in the short run is merged by the safeguard (or decomposition stopped early), which
 // legitimately gives another plan; that happens on a slow machine or under sanitizers.
-// Some subproblem's plan is the one its search had when its limit stopped it (LA-CBS's
-// anytime answer): a plan that depends on where the deadline cut in.
-bool stoppedEarly(const LayeredResult& r) {
-  return std::any_of(r.subproblems.begin(), r.subproblems.end(),
-                     [](const SolvedSubproblem& s) { return s.stopped_early; });
-}
-
 TEST_P(LayeredBackends, RandomInstancesGiveValidDeterministicPlans) {
   int solved = 0, tried = 0, compared = 0, repartitioned = 0;
   for (std::uint64_t seed = 1; seed <= 500; ++seed) {
