@@ -79,27 +79,28 @@ LaPibt::LaPibt(const SearchSpace& space, std::uint64_t seed, bool remember_escap
     ahead_[a] = sets;
     body_steps_[a] = steps;
   }
-  moving_.assign(static_cast<std::size_t>(width_) * height_, 0);
-  standing_.assign(moving_.size(), -1);
+  owner_.assign(static_cast<std::size_t>(width_) * height_, -1);
   placed_.assign(space.numAgents(), kNoState);
+  at_.resize(space.numAgents());
 }
 
 void LaPibt::claim(int a, const CellSet& set, const GridPose& p) {
-  const std::uint64_t tag = (static_cast<std::uint64_t>(step_) << 32) | static_cast<std::uint32_t>(a);
-  forEachMapCell(set, {p.x, p.y}, width_, height_, [&](std::size_t cell) { moving_[cell] = tag; });
+  forEachMapCell(set, {p.x, p.y}, width_, height_, [&](std::size_t cell) {
+    owner_[cell] = a;
+    swept_.push_back(cell);
+  });
 }
 
-void LaPibt::claimMotion(int a, const GridPose& p, Action action) {
-  // The footprint's own cells name a already (standing_), and no other claim takes them this
-  // step: a motion's claim is its sweep.
+void LaPibt::claimMotion(int a, Action action) {
+  const GridPose& p = at_[a];
+  // The footprint's own cells name a already, and no other claim takes them this step: a
+  // motion's claim is its sweep.
   claim(a, (*body_steps_[a])[p.heading][static_cast<int>(action)].sweeps, p);
 }
 
 void LaPibt::claimFootprints(const Config& current) {
-  if (++step_ == 0) {  // wrapped: forget every claim
-    std::fill(moving_.begin(), moving_.end(), 0);
-    step_ = 1;
-  }
+  for (const std::size_t cell : swept_) owner_[cell] = -1;
+  swept_.clear();
   // Consecutive configurations differ in a few agents: only their footprints are moved. A cell
   // is cleared only if it still names the agent (another may have stepped there already).
   for (int b = 0; b < space_.numAgents(); ++b) {
@@ -112,21 +113,23 @@ void LaPibt::claimFootprints(const Config& current) {
       if (act > 0) {  // one step on: only the cells that change
         const BodyStep& changed = (*body_steps_[b])[old.heading][act];
         forEachMapCell(changed.leaves, {old.x, old.y}, width_, height_, [&](std::size_t cell) {
-          if (standing_[cell] == b) standing_[cell] = -1;
+          if (owner_[cell] == b) owner_[cell] = -1;
         });
         forEachMapCell(changed.enters, {old.x, old.y}, width_, height_,
-                       [&](std::size_t cell) { standing_[cell] = b; });
+                       [&](std::size_t cell) { owner_[cell] = b; });
         placed_[b] = current[b];
+        at_[b] = q;
         continue;
       }
       forEachMapCell(space_.cells(b).body(old.heading), {old.x, old.y}, width_, height_,
                      [&](std::size_t cell) {
-                       if (standing_[cell] == b) standing_[cell] = -1;
+                       if (owner_[cell] == b) owner_[cell] = -1;
                      });
     }
     forEachMapCell(space_.cells(b).body(q.heading), {q.x, q.y}, width_, height_,
-                   [&](std::size_t cell) { standing_[cell] = b; });
+                   [&](std::size_t cell) { owner_[cell] = b; });
     placed_[b] = current[b];
+    at_[b] = q;
   }
 }
 
@@ -155,17 +158,19 @@ const StateChoices& LaPibt::candidates(int a, StateId s) {
   return out;
 }
 
-bool LaPibt::fits(int a, StateId from, Action action, std::vector<int>* in_way) const {
-  const GridPose p = space_.graph(a).pose(from);
+bool LaPibt::fits(int a, Action action, std::vector<int>* in_way) const {
+  const GridPose p = at_[a];
   if (++agent_query_ == 0) {  // wrapped: forget every stamp
     std::fill(seen_agent_.begin(), seen_agent_.end(), 0);
     agent_query_ = 1;
   }
   const std::size_t first_in_way = in_way != nullptr ? in_way->size() : 0;
   bool clear = true;
+  // Locals, so that the loop does not reload them after every push onto in_way.
+  const std::int32_t* owner = owner_.data();
   forEachMapCell((*ahead_[a])[p.heading][static_cast<int>(action)], {p.x, p.y}, width_, height_,
                  [&](std::size_t cell) {
-                   const int b = ownerOf(cell);
+                   const int b = owner[cell];
                    if (b < 0 || b == a) return true;
                    clear = false;
                    if (in_way == nullptr) return false;  // one is enough
@@ -245,18 +250,19 @@ StateChoices LaPibt::cachedEscape(int a, StateId from, int pusher, StateId pushe
                                       static_cast<std::uint32_t>(pusher_from);
   Escape* slot = nullptr;
   if (remember_escapes_) {
-    // Allocated at the first push, about a thousand slots an agent: the many small searches
-    // (pair proofs, a knot alone) pay little for it.
+    // Allocated at the first push, about 256 slots an agent: the many small searches (pair
+    // proofs, a knot alone) pay little for it, and the table of a large fleet's search stays
+    // in the nearer caches (the answers a search uses again are few).
     if (escapes_.empty()) {
       std::size_t slots = 1024;
-      while (slots < kEscapeSlots && slots < 1024 * static_cast<std::size_t>(space_.numAgents())) slots *= 2;
+      while (slots < kEscapeSlots && slots < 256 * static_cast<std::size_t>(space_.numAgents())) slots *= 2;
       escapes_.resize(slots);
     }
     const std::uint64_t hash = ((agent_state * 0x9e3779b97f4a7c15ULL) ^ pusher_motion) * 0xff51afd7ed558ccdULL;
     slot = &escapes_[(hash >> 40) & (escapes_.size() - 1)];
     if (slot->agent_state == agent_state && slot->pusher_motion == pusher_motion) return slot->steps;
   }
-  const GridPose p = space_.graph(pusher).pose(pusher_from);
+  const GridPose& p = at_[pusher];  // pusher_from's pose
   const StateChoices steps = escapeSteps(a, from, space_.cells(pusher).swept(p.heading, action), {p.x, p.y});
   if (slot != nullptr) *slot = {agent_state, pusher_motion, steps};
   return steps;
@@ -273,10 +279,10 @@ bool LaPibt::assign(int a, const Config& current, Config& next, int pusher, Acti
     // The agents in a's way are appended to in_way_ after `mark`; pushes nested in this one
     // append after them and take theirs off again before they return.
     const std::size_t mark = in_way_.size();
-    if (fits(a, current[a], action, &in_way_)) {
+    if (fits(a, action, &in_way_)) {
       in_way_.resize(mark);
       next[a] = s;
-      claimMotion(a, space_.graph(a).pose(current[a]), action);
+      claimMotion(a, action);
       return Outcome::Moves;
     }
     // Blocked: if only agents still to move are in the way, ask them to clear, and wait.
@@ -345,9 +351,9 @@ bool LaPibt::generate(const Config& current, const std::vector<std::pair<int, St
   claimFootprints(current);
   for (const auto& [a, s] : fixed) {
     const Action action = stepAction(space_.graph(a), current[a], s);
-    if (assigned_[a] || !fits(a, current[a], action)) return false;
+    if (assigned_[a] || !fits(a, action)) return false;
     next[a] = s;
-    if (action != Action::Wait) claimMotion(a, space_.graph(a).pose(current[a]), action);
+    if (action != Action::Wait) claimMotion(a, action);
     assigned_[a] = 1;
   }
   for (int a : order) {

@@ -8,8 +8,8 @@
 /// therefore works one step ahead: when an agent's best state is blocked only by agents still
 /// to move, those agents inherit its priority and take the first step of their shortest way
 /// out of the cells its move would sweep (a turn, for a robot that must turn before it can
-/// drive away), while it waits; the way opens in the next steps. Waiting always fits, so a configuration is
-/// produced unless the fixed moves clash.
+/// drive away), while it waits; the way opens in the next steps. Waiting always fits, so a
+/// configuration is produced unless the fixed moves clash.
 #include <algorithm>
 #include <array>
 #include <cstdint>
@@ -69,20 +69,20 @@ class LaPibt {
  private:
   // Marks the cells of `set` at pose p as claimed by agent a this step.
   void claim(int a, const CellSet& set, const GridPose& p);
-  // Claims agent a's motion `action` from p: its sweep.
-  void claimMotion(int a, const GridPose& p, Action action);
+  // Claims agent a's motion `action` from where it stands: its sweep.
+  void claimMotion(int a, Action action);
   // Starts a step: every agent claims its current footprint (moved from the last step's).
   void claimFootprints(const Config& current);
-  // a doing `action` from `from` meets no agent's claim: the sweep of an assigned agent's
-  // motion, the current footprint of the others. With `in_way`, the agents still to move that
-  // it meets, in agent order, appended to it.
-  bool fits(int a, StateId from, Action action, std::vector<int>* in_way = nullptr) const;
+  // a doing `action` from where it stands meets no agent's claim: the sweep of an assigned
+  // agent's motion, the current footprint of the others. With `in_way`, the agents still to
+  // move that it meets, in agent order, appended to it.
+  bool fits(int a, Action action, std::vector<int>* in_way = nullptr) const;
   // Assigns agent a (and, through pushes, agents blocking it). `pusher`: the agent whose motion
   // `pushing` (from where it stands) a blocks (-1: none); a must end clear of that motion's
   // sweep. Returns false if a could not.
   bool assign(int a, const Config& current, Config& next, int pusher, Action pushing);
-  // First steps of a's shortest escapes (within kEscapeDepth steps and kEscapeStates states) to a state whose footprint
-  // is clear of `sweep` at `origin`, best first.
+  // First steps of a's shortest escapes (within kEscapeDepth steps and kEscapeStates states) to a
+  // state whose footprint is clear of `sweep` at `origin`, best first.
   StateChoices escapeSteps(int a, StateId from, const CellSet& sweep, Cell origin) const;
   // escapeSteps of a from `from`, out of the way of `pusher` doing `action` from pusher_from,
   // remembered.
@@ -92,21 +92,16 @@ class LaPibt {
 
   const SearchSpace& space_;
   Rng rng_;
-  // What each map cell is claimed by this step: the sweep of an assigned agent's motion
-  // outside its footprint (moving_, as (step_ << 32) | agent; an entry of an earlier step is
-  // nobody's), else the footprint of the agent standing there in the configuration (standing_,
-  // -1: none), which every action of that agent sweeps. Claims never overlap (a motion is taken
-  // only where it fits), so a cell has one owner, and fits() reads the cells of one sweep
-  // instead of comparing agents.
+  // Which agent claims each map cell this step (-1: none): the footprint of the agent standing
+  // there in the configuration, which every action of that agent sweeps, or the sweep of an
+  // assigned agent's motion outside its footprint. Claims never overlap (a motion is taken only
+  // where it fits), so a cell has one owner, and fits() reads the cells of one sweep instead
+  // of comparing agents. Four bytes a cell keep the map's claims in the nearest caches.
   int width_ = 0, height_ = 0;
-  std::vector<std::uint64_t> moving_;
-  std::uint32_t step_ = 0;
-  std::vector<int> standing_;
-  Config placed_;  // the states whose footprints standing_ holds
-  int ownerOf(std::size_t cell) const {
-    const std::uint64_t m = moving_[cell];
-    return (m >> 32) == step_ ? static_cast<int>(m & 0xffffffffu) : standing_[cell];
-  }
+  std::vector<std::int32_t> owner_;
+  std::vector<std::size_t> swept_;  // the cells of this step's motions, freed at the next step
+  Config placed_;  // the states whose footprints owner_ holds
+  std::vector<GridPose> at_;  // their poses: every claim this step starts from them
   // Per agent, heading and action: the cells fits() reads (see the constructor).
   using Ahead = std::array<std::array<CellSet, kActions>, kHeadings>;
   std::vector<std::shared_ptr<const Ahead>> ahead_;
