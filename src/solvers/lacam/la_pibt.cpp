@@ -251,8 +251,8 @@ StateChoices LaPibt::cachedEscape(int a, StateId from, int pusher, StateId pushe
   Escape* slot = nullptr;
   if (remember_escapes_) {
     // Allocated at the first push, about 256 slots an agent: the many small searches (pair
-    // proofs, a knot alone) pay little for it, and the table of a large fleet's search stays
-    // in the nearer caches (the answers a search uses again are few).
+    // proofs, a knot alone) pay little for it, and a large fleet's table stays in the nearer
+    // caches, which pays for the few more escapes searched again.
     if (escapes_.empty()) {
       std::size_t slots = 1024;
       while (slots < kEscapeSlots && slots < 256 * static_cast<std::size_t>(space_.numAgents())) slots *= 2;
