@@ -241,13 +241,13 @@ StateChoices LaPibt::escapeSteps(int a, StateId from, const CellSet& sweep, Cell
   return result;
 }
 
-StateChoices LaPibt::cachedEscape(int a, StateId from, int pusher, StateId pusher_from, Action action) {
+StateChoices LaPibt::cachedEscape(int a, StateId from, int pusher, Action action) {
   // The escape depends on nothing but a's graph, the map and the pusher's sweep: the same
   // situations recur across configurations, so the answers are kept (up to a bound).
   const std::uint64_t agent_state = (static_cast<std::uint64_t>(a) << 32) | static_cast<std::uint32_t>(from);
   const std::uint64_t pusher_motion = (static_cast<std::uint64_t>(pusher) << 35) |
                                       (static_cast<std::uint64_t>(action) << 32) |
-                                      static_cast<std::uint32_t>(pusher_from);
+                                      static_cast<std::uint32_t>(placed_[pusher]);
   Escape* slot = nullptr;
   if (remember_escapes_) {
     // Allocated at the first push, about 256 slots an agent: the many small searches (pair
@@ -262,7 +262,7 @@ StateChoices LaPibt::cachedEscape(int a, StateId from, int pusher, StateId pushe
     slot = &escapes_[(hash >> 40) & (escapes_.size() - 1)];
     if (slot->agent_state == agent_state && slot->pusher_motion == pusher_motion) return slot->steps;
   }
-  const GridPose& p = at_[pusher];  // pusher_from's pose
+  const GridPose& p = at_[pusher];
   const StateChoices steps = escapeSteps(a, from, space_.cells(pusher).swept(p.heading, action), {p.x, p.y});
   if (slot != nullptr) *slot = {agent_state, pusher_motion, steps};
   return steps;
@@ -299,7 +299,7 @@ bool LaPibt::assign(int a, const Config& current, Config& next, int pusher, Acti
   if (pusher >= 0) {
     // Pushed: step towards the nearest state clear of the cells the pusher will sweep next
     // step. Large robots without reverse often need a turn first, so progress is enough.
-    const StateChoices options = cachedEscape(a, current[a], pusher, current[pusher], pushing);
+    const StateChoices options = cachedEscape(a, current[a], pusher, pushing);
     for (int i = 0; i < options.size(); ++i) {
       const Outcome o = attempt(options[i], options.action(i));
       if (o == Outcome::Moves) return true;

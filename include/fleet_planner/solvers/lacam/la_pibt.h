@@ -84,9 +84,9 @@ class LaPibt {
   // First steps of a's shortest escapes (within kEscapeDepth steps and kEscapeStates states) to a
   // state whose footprint is clear of `sweep` at `origin`, best first.
   StateChoices escapeSteps(int a, StateId from, const CellSet& sweep, Cell origin) const;
-  // escapeSteps of a from `from`, out of the way of `pusher` doing `action` from pusher_from,
-  // remembered.
-  StateChoices cachedEscape(int a, StateId from, int pusher, StateId pusher_from, Action action);
+  // escapeSteps of a from `from`, out of the way of `pusher` doing `action` from where it
+  // stands, remembered.
+  StateChoices cachedEscape(int a, StateId from, int pusher, Action action);
   static constexpr int kEscapeDepth = 8;
   static constexpr std::size_t kEscapeStates = 4096;  // bound on one escape search
 
