@@ -18,9 +18,7 @@ struct Box {
 };
 
 /// A radius, in cells, that the footprint's cells never exceed (from the robot's cell).
-inline int radiusOf(const FootprintCells& cells) {
-  return static_cast<int>(std::ceil(std::sqrt(static_cast<double>(cells.maxNormSq())))) + 1;
-}
+inline int radiusOf(const FootprintCells& cells) { return cells.reach(); }
 
 /// Bounding box of every cell a path (and its parked tail) can cover.
 inline Box boxOf(const FootprintCells& cells, const Path& p) {

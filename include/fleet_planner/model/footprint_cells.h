@@ -14,6 +14,7 @@
 ///   other polygons it is the sweep of their star hull (the union of triangles from the origin
 ///   to each edge), a superset, so collision checks stay safe.
 #include <array>
+#include <cmath>
 #include <functional>
 #include <memory>
 
@@ -44,6 +45,9 @@ class FootprintCells {
   int step() const { return step_; }
   /// Largest squared length of any offset in any body or sweep.
   int maxNormSq() const { return max_norm_sq_; }
+  /// A radius, in cells, that no cell of any body or sweep reaches from the robot's cell: two
+  /// robots farther apart than the sum of their reaches cannot meet.
+  int reach() const { return static_cast<int>(std::ceil(std::sqrt(static_cast<double>(max_norm_sq_)))) + 1; }
 
   /// Same cells in every body and sweep: robots with such footprints share one state graph.
   bool sameCells(const FootprintCells& other) const;
