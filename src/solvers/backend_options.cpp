@@ -65,6 +65,7 @@ void LaLns::configure(const BackendOptionValues& values) {
   bind.integer("parking_expansions_per_robot", o.parking_expansions_per_robot, 0, kMaxCount);
   bind.number("parking_share", o.parking_share, 0, 1);
   bind.integer("parking_orders", o.parking_orders, 1, 3);
+  bind.integer("parking_precedence_expansions", o.parking_precedence_expansions, 0, kMaxCount);
   bind.number("parking_order_slack", o.parking_order_slack, 1, 100);
   bind.integer("portfolio_robots", o.portfolio_robots, 0, 1000000);
   bind.flag("end_game", o.end_game);

@@ -177,7 +177,8 @@ std::optional<SolveResult> LnsSearch::parkFirst(const std::vector<int>& order, s
   const Deadline deadline = problem_->deadline.within(problem_->deadline.remaining() * options_.parking_share);
   o.order_slack = options_.parking_order_slack;
   // The orders of parking_orders.h, one of them kept (fastestParkingPlan).
-  const std::vector<std::vector<int>> orders = parkingOrders(space_, order, options_.parking_orders);
+  const std::vector<std::vector<int>> orders =
+      parkingOrders(space_, order, options_.parking_orders, options_.parking_precedence_expansions);
   const std::optional<ParkingPlan> plan =
       fastestParkingPlan(space_, orders, deadline, o, problem_->threads, stats_->low_level_expansions);
   if (!plan) return std::nullopt;

@@ -2,20 +2,11 @@
 #include "fleet_planner/solvers/lns/parking_orders.h"
 
 #include <algorithm>
-#include <cmath>
 
 #include "fleet_planner/model/collision.h"
+#include "fleet_planner/solvers/lns/parking_precedence.h"
 
 namespace fleet_planner {
-
-namespace {
-
-// A bound on how far from its pose a cell of agent a's footprint can be, in cells.
-int footprintReach(const SearchSpace& space, int a) {
-  return static_cast<int>(std::ceil(std::sqrt(static_cast<double>(space.cells(a).maxNormSq())))) + 1;
-}
-
-}  // namespace
 
 StatePath shortestWay(const SearchSpace& space, int a) {
   StateId s = space.start(a);
@@ -42,7 +33,7 @@ std::vector<int> targetsCrossed(const SearchSpace& space, const std::vector<Stat
     for (int b = 0; b < n; ++b) {
       if (b == a) continue;
       const GridPose target = space.graph(b).pose(space.target(b));
-      const int reach = footprintReach(space, a) + footprintReach(space, b);
+      const int reach = space.cells(a).reach() + space.cells(b).reach();
       for (StateId s : ways[a]) {
         const GridPose q = space.graph(a).pose(s);
         // Footprints farther apart than their reaches cannot overlap: skip the cell test.
@@ -58,11 +49,24 @@ std::vector<int> targetsCrossed(const SearchSpace& space, const std::vector<Stat
 }
 
 std::vector<std::vector<int>> parkingOrders(const SearchSpace& space, const std::vector<int>& longest_first,
-                                            int count) {
-  std::vector<std::vector<int>> orders = {longest_first};
+                                            int count, long long precedence_expansions) {
+  const int n = space.numAgents();
+  std::vector<StatePath> ways;
+  if (precedence_expansions > 0 || count >= 3) {
+    ways.resize(n);
+    for (int a = 0; a < n; ++a) ways[a] = shortestWay(space, a);
+  }
+  std::vector<std::vector<int>> orders;
   auto add = [&](std::vector<int> order) {
     if (std::find(orders.begin(), orders.end(), order) == orders.end()) orders.push_back(std::move(order));
   };
+  // The first order with the robots that shut others in or out after them; the second as it
+  // is, so that where both get every robot home the faster plan is still there to keep.
+  if (precedence_expansions > 0) {
+    add(honourPrecedence(longest_first, parkingPrecedence(space, ways, precedence_expansions)));
+  } else {
+    add(longest_first);
+  }
   auto way = [&](int a) { return space.distance(a, space.start(a)); };
   if (count >= 2) {
     std::vector<int> shortest_first = longest_first;
@@ -71,8 +75,6 @@ std::vector<std::vector<int>> parkingOrders(const SearchSpace& space, const std:
     add(std::move(shortest_first));
   }
   if (count >= 3) {
-    std::vector<StatePath> ways(space.numAgents());
-    for (int a = 0; a < space.numAgents(); ++a) ways[a] = shortestWay(space, a);
     const std::vector<int> crossed = targetsCrossed(space, ways);
     std::vector<int> crossed_last = longest_first;
     std::stable_sort(crossed_last.begin(), crossed_last.end(), [&](int x, int y) {

@@ -121,6 +121,9 @@ struct LaLnsOptions {
   /// (fastestParkingPlan; 1: the fastest). A third order makes plans about 7 % cheaper on
   /// real maps but costs a third more time on two threads: not the default.
   int parking_orders = 2;
+  /// The first order puts a robot after the robots it would shut in or out at its target
+  /// (parking_precedence.h), each pair decided within this many expansions (0: never).
+  long long parking_precedence_expansions = 20'000;
   double parking_order_slack = 1;
   /// A subproblem of at least this many robots with two threads (the fleet solved as one):
   /// after its first plan, a second search with another seed repairs a copy of it on the other
