@@ -26,23 +26,22 @@ StatePath shortestWay(const SearchSpace& space, int a) {
   return way;
 }
 
+bool wayCoversTarget(const SearchSpace& space, int a, const StatePath& way, int b) {
+  const GridPose target = space.graph(b).pose(space.target(b));
+  const int reach = space.cells(a).reach() + space.cells(b).reach();
+  return std::any_of(way.begin(), way.end(), [&](StateId s) {
+    const GridPose q = space.graph(a).pose(s);
+    // Footprints farther apart than their reaches cannot overlap: skip the cell test.
+    return !fartherApart(q, target, reach) && footprintsOverlap(space.cells(b), target, space.cells(a), q);
+  });
+}
+
 std::vector<int> targetsCrossed(const SearchSpace& space, const std::vector<StatePath>& ways) {
   const int n = space.numAgents();
   std::vector<int> crossed(n, 0);
   for (int a = 0; a < n; ++a) {
     for (int b = 0; b < n; ++b) {
-      if (b == a) continue;
-      const GridPose target = space.graph(b).pose(space.target(b));
-      const int reach = space.cells(a).reach() + space.cells(b).reach();
-      for (StateId s : ways[a]) {
-        const GridPose q = space.graph(a).pose(s);
-        // Footprints farther apart than their reaches cannot overlap: skip the cell test.
-        if (fartherApart(q, target, reach)) continue;
-        if (footprintsOverlap(space.cells(b), target, space.cells(a), q)) {
-          ++crossed[b];
-          break;
-        }
-      }
+      if (b != a && wayCoversTarget(space, a, ways[a], b)) ++crossed[b];
     }
   }
   return crossed;

@@ -9,6 +9,7 @@
 #include <tuple>
 
 #include "fleet_planner/model/collision.h"
+#include "fleet_planner/solvers/lns/parking_orders.h"
 
 namespace fleet_planner {
 
@@ -50,7 +51,8 @@ class AroundSearch {
       ahead.pop();
       bool met = false;
       space.graph(a).forEachSuccessor(s, [&](Action action, StateId t) {
-        if (met || (seen_[t] & (kFromStart | kBlocked)) || !space.allows(a, s, action) || space.distance(a, t) < 0) return;
+        if (met || (seen_[t] & (kFromStart | kBlocked))) return;
+        if (!space.allows(a, s, action) || space.distance(a, t) < 0) return;
         if (seen_[t] & kFromTarget) {
           met = true;
           return;
@@ -112,11 +114,8 @@ std::vector<std::vector<int>> parkingPrecedence(const SearchSpace& space, const 
       const GridPose target = space.graph(b).pose(space.target(b));
       const int reach = space.cells(a).reach() + space.cells(b).reach();
       if (target.x < x0 - reach || target.x > x1 + reach || target.y < y0 - reach || target.y > y1 + reach) continue;
-      const bool crosses = std::any_of(ways[a].begin(), ways[a].end(), [&](StateId s) {
-        const GridPose p = space.graph(a).pose(s);
-        return !fartherApart(p, target, reach) && footprintsOverlap(space.cells(b), target, space.cells(a), p);
-      });
-      if (crosses && search.run(space, a, b, max_expansions_per_pair) == WayAround::Closed) before[b].push_back(a);
+      if (!wayCoversTarget(space, a, ways[a], b)) continue;
+      if (search.run(space, a, b, max_expansions_per_pair) == WayAround::Closed) before[b].push_back(a);
     }
   }
   return before;

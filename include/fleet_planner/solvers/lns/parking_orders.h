@@ -23,6 +23,9 @@ namespace fleet_planner {
 /// obstacles only; the first action in enum order at each step); empty if unreachable.
 StatePath shortestWay(const SearchSpace& space, int a);
 
+/// Agent a at some state of `way` covers a cell of agent b's footprint at b's target.
+bool wayCoversTarget(const SearchSpace& space, int a, const StatePath& way, int b);
+
 /// For each agent, how many other agents' `ways` (a path per agent, empty: none) cover a cell
 /// of its footprint at its target at some state along them.
 std::vector<int> targetsCrossed(const SearchSpace& space, const std::vector<StatePath>& ways);
